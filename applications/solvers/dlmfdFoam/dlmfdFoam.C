@@ -1,0 +1,126 @@
+/*---------------------------------------------------------------------------*\
+  dlmfdFoam: DLM/FD particle-resolved simulation of particulate flows
+-------------------------------------------------------------------------------
+License
+    This file is part of dlmfdFoam, an extension of OpenFOAM.
+
+    dlmfdFoam is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by the
+    Free Software Foundation, either version 3 of the License, or (at your
+    option) any later version. See <http://www.gnu.org/licenses/>.
+
+Class
+Application
+    dlmfdFoam
+
+Group
+    grpIncompressibleSolvers
+
+Description
+    Transient solver for the incompressible, laminar flow of Newtonian and
+    generalised-Newtonian fluids (singlePhaseTransportModel) with the
+    PISO/PIMPLE algorithm of pimpleControl, driven or held by a run-time
+    selectable mean pressure gradient (meanFlowControl).
+
+    This is the fluid half of the DLM/FD method: the particle coupling of
+    Glowinski et al. (1999) and Wachs (2009) is wired in here by later
+    libraries; the fluid step stays the one below.
+
+    Momentum, in kinematic form (p is pressure over density):
+
+    \f[
+        \ddt{U} + \div(\phi U)
+      - \div\left(\nu (\grad U + \grad U^T)\right)
+      = - \grad p + G + S_{fvOptions}
+    \f]
+
+Usage
+    \b dlmfdFoam [OPTION]
+
+    Reads:
+    \table
+        File                           | Contents
+        constant/transportProperties   | transportModel and its coefficients
+        constant/flowControlProperties | meanFlowControl model, see Foam::meanFlowControl
+        system/fvSolution PIMPLE       | nOuterCorrectors, nCorrectors, ...
+        constant/fvOptions (optional)  | extra sources and constraints
+    \endtable
+
+    Writes the fields U, p, phi at every write time, \<time\>/uniform/gradP,
+    and postProcessing/meanFlowControl/\<startTime\>/meanFlowControl.dat.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "singlePhaseTransportModel.H"
+#include "pimpleControl.H"
+#include "fvOptions.H"
+#include "meanFlowControl.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Transient solver for incompressible, laminar flow of Newtonian and"
+        " generalised-Newtonian fluids with a run-time selectable mean"
+        " pressure gradient (the fluid step of the DLM/FD method)."
+    );
+
+    #include "postProcess.H"
+
+    #include "addCheckCaseOptions.H"
+    #include "setRootCaseLists.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+    #include "createControl.H"
+    #include "createTimeControls.H"
+    #include "createFields.H"
+    #include "createFvOptions.H"
+    #include "initContinuityErrs.H"
+    #include "CourantNo.H"
+    #include "setInitialDeltaT.H"
+
+    // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+    Info<< "\nStarting time loop\n" << endl;
+
+    while (runTime.run())
+    {
+        #include "readTimeControls.H"
+        #include "CourantNo.H"
+        #include "setDeltaT.H"
+
+        ++runTime;
+
+        Info<< "Time = " << runTime.timeName() << nl << endl;
+
+        // --- Pressure-velocity PIMPLE corrector loop
+        while (pimple.loop())
+        {
+            #include "UEqn.H"
+
+            // --- Pressure corrector loop
+            while (pimple.correct())
+            {
+                #include "pEqn.H"
+            }
+
+            laminarTransport.correct();
+        }
+
+        meanFlow->log(U);
+
+        runTime.write();
+
+        runTime.printExecutionTime(Info);
+    }
+
+    Info<< "End\n" << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //
