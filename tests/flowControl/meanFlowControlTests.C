@@ -54,6 +54,17 @@ std::string ioErrorMessage(Fn fn)
     return "";
 }
 
+//- The message of the IOerror that selecting from the properties text
+//- throws, or "" if the selection succeeds
+std::string selectionError(const fvMesh& mesh, const std::string& text)
+{
+    return ioErrorMessage([&]()
+    {
+        meanFlowControl::New(mesh, properties(text));
+    });
+}
+
+
 //- A zero velocity field on the mesh and a 1/A field of value rAU
 struct flowFields
 {
@@ -87,17 +98,15 @@ TEST(meanFlowControlSelection, typoListsEveryValidName)
     test::foamTestCase tc;
     const fvMesh& mesh = tc.makeBoxMesh(2, 2, 2, vector(1, 1, 1));
 
-    const std::string msg = ioErrorMessage([&]()
-    {
-        meanFlowControl::New
-        (
-            mesh,
-            properties("meanFlowControl fixedPresureGradient;")
-        );
-    });
+    const std::string msg =
+        selectionError(mesh, "meanFlowControl fixedPresureGradient;");
 
     EXPECT_NE(msg.find("fixedPresureGradient"), std::string::npos) << msg;
-    for (const char* name : {"none", "fixedPressureGradient", "fixedBulkVelocity"})
+    for
+    (
+        const char* name
+      : {"none", "fixedPressureGradient", "fixedBulkVelocity"}
+    )
     {
         EXPECT_NE(msg.find(name), std::string::npos)
             << "valid name " << name << " not listed in: " << msg;
@@ -110,10 +119,7 @@ TEST(meanFlowControlSelection, missingKeywordNamesIt)
     test::foamTestCase tc;
     const fvMesh& mesh = tc.makeBoxMesh(2, 2, 2, vector(1, 1, 1));
 
-    const std::string msg = ioErrorMessage([&]()
-    {
-        meanFlowControl::New(mesh, properties("model none;"));
-    });
+    const std::string msg = selectionError(mesh, "model none;");
 
     EXPECT_NE(msg.find("meanFlowControl"), std::string::npos) << msg;
 }
@@ -163,18 +169,12 @@ TEST(fixedPressureGradient, wrongDimensionsAreRejected)
     test::foamTestCase tc;
     const fvMesh& mesh = tc.makeBoxMesh(2, 2, 2, vector(1, 1, 1));
 
-    const std::string msg = ioErrorMessage([&]()
-    {
-        meanFlowControl::New
-        (
-            mesh,
-            properties
-            (
-                "meanFlowControl fixedPressureGradient;"
-                "fixedPressureGradient { gradP [0 1 -1 0 0 0 0] (1 0 0); }"
-            )
-        );
-    });
+    const std::string msg = selectionError
+    (
+        mesh,
+        "meanFlowControl fixedPressureGradient;"
+        "fixedPressureGradient { gradP [0 1 -1 0 0 0 0] (1 0 0); }"
+    );
 
     EXPECT_NE(msg, "") << "a velocity given as gradP was accepted";
 }
@@ -185,14 +185,8 @@ TEST(fixedPressureGradient, missingSubDictionaryNamesKeyword)
     test::foamTestCase tc;
     const fvMesh& mesh = tc.makeBoxMesh(2, 2, 2, vector(1, 1, 1));
 
-    const std::string msg = ioErrorMessage([&]()
-    {
-        meanFlowControl::New
-        (
-            mesh,
-            properties("meanFlowControl fixedPressureGradient;")
-        );
-    });
+    const std::string msg =
+        selectionError(mesh, "meanFlowControl fixedPressureGradient;");
 
     EXPECT_NE(msg.find("gradP"), std::string::npos) << msg;
 }
@@ -305,18 +299,12 @@ TEST(fixedBulkVelocity, zeroDirectionIsRejected)
     test::foamTestCase tc;
     const fvMesh& mesh = tc.makeBoxMesh(2, 2, 2, vector(1, 1, 1));
 
-    const std::string msg = ioErrorMessage([&]()
-    {
-        meanFlowControl::New
-        (
-            mesh,
-            properties
-            (
-                "meanFlowControl fixedBulkVelocity;"
-                "fixedBulkVelocity { direction (0 0 0); Ubar 0; }"
-            )
-        );
-    });
+    const std::string msg = selectionError
+    (
+        mesh,
+        "meanFlowControl fixedBulkVelocity;"
+        "fixedBulkVelocity { direction (0 0 0); Ubar 0; }"
+    );
 
     EXPECT_NE(msg.find("direction"), std::string::npos) << msg;
 }
@@ -329,19 +317,13 @@ TEST(fixedBulkVelocity, relaxationOutOfRangeIsRejected)
 
     for (const char* value : {"0", "1.5", "-1"})
     {
-        const std::string msg = ioErrorMessage([&]()
-        {
-            meanFlowControl::New
-            (
-                mesh,
-                properties
-                (
-                    std::string("meanFlowControl fixedBulkVelocity;")
-                  + "fixedBulkVelocity { direction (1 0 0); Ubar 0;"
-                  + " relaxation " + value + "; }"
-                )
-            );
-        });
+        const std::string msg = selectionError
+        (
+            mesh,
+            std::string("meanFlowControl fixedBulkVelocity;")
+            + "fixedBulkVelocity { direction (1 0 0); Ubar 0;"
+            + " relaxation " + value + "; }"
+        );
 
         EXPECT_NE(msg.find("relaxation"), std::string::npos)
             << "relaxation " << value << ": " << msg;
