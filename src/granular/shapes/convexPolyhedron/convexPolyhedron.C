@@ -88,6 +88,14 @@ void Foam::particleShapes::convexPolyhedron::build
     points_ -= centroid;
     volumeInertia_ = tr(C)*symmTensor::I - C;
     boundingRadius_ = max(mag(points_));
+
+    faceNormals_.setSize(faces_.size());
+    faceOffsets_.setSize(faces_.size());
+    forAll(faces_, facei)
+    {
+        faceNormals_[facei] = faces_[facei].unitNormal(points_);
+        faceOffsets_[facei] = faceNormals_[facei] & points_[faces_[facei][0]];
+    }
 }
 
 
