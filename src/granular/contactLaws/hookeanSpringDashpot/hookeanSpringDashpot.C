@@ -15,6 +15,7 @@ Class
 #include "hookeanSpringDashpot.H"
 #include "addToRunTimeSelectionTable.H"
 #include "mathematicalConstants.H"
+#include "granularInput.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -37,24 +38,6 @@ namespace
         return Foam::exp(-c/s*Foam::atan2(s, c));
     }
 
-    //- A positive coefficient, or a FatalIOError naming it
-    Foam::scalar positive
-    (
-        const Foam::dictionary& coeffs,
-        const Foam::word& key,
-        const Foam::word& pairName
-    )
-    {
-        const Foam::scalar value = coeffs.get<Foam::scalar>(key);
-        if (!(value > 0))
-        {
-            FatalIOErrorInFunction(coeffs)
-                << "pair " << pairName << ": " << key << " = " << value
-                << " is not allowed; it must be > 0"
-                << Foam::exit(Foam::FatalIOError);
-        }
-        return value;
-    }
 }
 
 
@@ -105,13 +88,24 @@ void Foam::contactLaws::hookeanSpringDashpot::readCoeffs
 
     if (hasKn)
     {
-        kn_ = positive(coeffs, "kn", pair_.name);
+        kn_ = granularInput::positive
+        (
+            coeffs, "kn", "pair " + pair_.name, dimForce/dimLength
+        );
     }
     else
     {
-        const scalar ratio = positive(coeffs, "maxOverlapRatio", pair_.name);
-        const scalar v0 = positive(coeffs, "impactVelocity", pair_.name);
-        const scalar D = positive(coeffs, "referenceDiameter", pair_.name);
+        const string owner("pair " + pair_.name);
+        const scalar ratio =
+            granularInput::positive(coeffs, "maxOverlapRatio", owner);
+        const scalar v0 = granularInput::positive
+        (
+            coeffs, "impactVelocity", owner, dimVelocity
+        );
+        const scalar D = granularInput::positive
+        (
+            coeffs, "referenceDiameter", owner, dimLength
+        );
 
         const scalar M = pair_.referenceMass(D);
         const scalar omega0 = v0*overlapFactor(dampingRatio_)/(ratio*D);

@@ -14,6 +14,7 @@ Class
 
 #include "hookeanStaticFriction.H"
 #include "addToRunTimeSelectionTable.H"
+#include "granularInput.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -36,15 +37,14 @@ Foam::contactLaws::hookeanStaticFriction::hookeanStaticFriction
 )
 :
     hookeanSpringDashpot(coeffs, pair),
-    ks_(coeffs.get<scalar>("ks"))
-{
-    if (!(ks_ > 0))
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "pair " << pair.name << ": ks = " << ks_
-            << " is not allowed; it must be > 0" << exit(FatalIOError);
-    }
-}
+    ks_
+    (
+        granularInput::positive
+        (
+            coeffs, "ks", "pair " + pair.name, dimForce/dimLength
+        )
+    )
+{}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

@@ -15,6 +15,7 @@ Class
 #include "convexPolyhedron.H"
 #include "convexHull.H"
 #include "addToRunTimeSelectionTable.H"
+#include "granularInput.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -127,13 +128,10 @@ Foam::particleShapes::convexPolyhedron::convexPolyhedron
     volumeInertia_(Zero),
     boundingRadius_(0)
 {
-    const scalar scale = dict.getOrDefault<scalar>("scale", 1);
-    if (!(scale > 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << "shape " << name << ": scale " << scale
-            << " is not allowed; it must be > 0" << exit(FatalIOError);
-    }
+    const scalar scale =
+        dict.found("scale")
+      ? granularInput::positive(dict, "scale", "shape " + name)
+      : 1;
 
     build(scale*dict.get<pointField>("vertices"));
 }

@@ -15,7 +15,7 @@ Class
 #include "platonicSolid.H"
 #include "addToRunTimeSelectionTable.H"
 #include "mathematicalConstants.H"
-#include "dimensionedScalar.H"
+#include "granularInput.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -174,14 +174,10 @@ Foam::scalar Foam::particleShapes::platonicSolid::readEdge
             << exit(FatalIOError);
     }
 
-    const word key(hasD ? "D" : "edge");
-    const scalar value = dimensionedScalar(key, dimLength, dict).value();
-    if (!(value > 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << "shape " << name << ": " << key << " = " << value
-            << " is not allowed; it must be > 0" << exit(FatalIOError);
-    }
+    const scalar value = granularInput::positive
+    (
+        dict, hasD ? "D" : "edge", "shape " + name, dimLength
+    );
 
     if (hasEdge)
     {

@@ -15,7 +15,7 @@ Class
 #include "sphere.H"
 #include "addToRunTimeSelectionTable.H"
 #include "mathematicalConstants.H"
-#include "dimensionedScalar.H"
+#include "granularInput.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -52,16 +52,8 @@ Foam::particleShapes::sphere::sphere
 )
 :
     particleShape(name),
-    radius_(0.5*dimensionedScalar("D", dimLength, dict).value())
-{
-    if (!(radius_ > 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << "shape " << name << ": D = " << 2*radius_
-            << " is not allowed; the diameter must be > 0"
-            << exit(FatalIOError);
-    }
-}
+    radius_(0.5*granularInput::positive(dict, "D", "shape " + name, dimLength))
+{}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
