@@ -40,8 +40,8 @@ autoPtr<contactLaw> makeLaw(const std::string& text, const materialPair& pair)
     return contactLaw::New("hookeanSpringDashpot", dict, pair);
 }
 
-//- One velocity-Verlet step of two particles in contact through law;
-//- returns the gap |xi - xj| - (ri + rj) measured along the way (spheres)
+//- One velocity-Verlet step of two particles interacting through law;
+//- returns whether they touched at the end of the drift
 bool stepPair
 (
     rigidParticle& pi,

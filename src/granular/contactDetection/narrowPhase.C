@@ -320,6 +320,16 @@ bool Foam::narrowPhase::shapeShape
         );
     }
 
+    // Bounding spheres apart: no contact, whichever path would follow
+    if
+    (
+        magSqr(bi.centre - bj.centre)
+      > sqr(bi.shape.boundingRadius() + bj.shape.boundingRadius())
+    )
+    {
+        return false;
+    }
+
     const auto* pi =
         dynamic_cast<const particleShapes::convexPolyhedron*>(&bi.shape);
     const auto* pj =
@@ -336,16 +346,6 @@ bool Foam::narrowPhase::shapeShape
         }
         contact.normal = -contact.normal;
         return true;
-    }
-
-    // Bounding spheres apart: no contact, no need for GJK
-    if
-    (
-        magSqr(bi.centre - bj.centre)
-      > sqr(bi.shape.boundingRadius() + bj.shape.boundingRadius())
-    )
-    {
-        return false;
     }
 
     return shapeShapeGJK(bi, bj, contact);

@@ -64,13 +64,14 @@ Foam::vector Foam::rigidParticle::velocityAt(const point& p, const scalar dt) co
 {
     // Velocities at the end of the step: the second half kick predicted
     // with the forces of the step's start
+    const tensor R(this->R());
     const vector U = U_ + (0.5*dt/mass_)*F_;
     const vector omegaB =
         omegaBody_
       + 0.5*dt
-       *(invInertia_ & ((T_ & R()) - (omegaBody_ ^ (inertia_ & omegaBody_))));
+       *(invInertia_ & ((T_ & R) - (omegaBody_ ^ (inertia_ & omegaBody_))));
 
-    return U + ((R() & omegaB) ^ (p - x_));
+    return U + ((R & omegaB) ^ (p - x_));
 }
 
 
