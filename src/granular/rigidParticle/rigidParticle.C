@@ -9,10 +9,23 @@ License
     Free Software Foundation, either version 3 of the License, or (at your
     option) any later version. See <http://www.gnu.org/licenses/>.
 
-Class
+Description
+    Velocity Verlet for one rigid particle.
+
 \*---------------------------------------------------------------------------*/
 
 #include "rigidParticle.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::rigidParticle::motionKind>
+Foam::rigidParticle::motionKindNames
+({
+    { motionKind::free, "free" },
+    { motionKind::fixed, "fixed" },
+    { motionKind::prescribed, "prescribed" },
+});
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -33,7 +46,11 @@ Foam::rigidParticle::rigidParticle
     U_(Zero),
     omegaBody_(Zero),
     F_(Zero),
-    T_(Zero)
+    T_(Zero),
+    Fstart_(Zero),
+    Tstart_(Zero),
+    motion_(motionKind::free),
+    planar_(shape.planar())
 {
     if (!(density > 0))
     {
@@ -47,8 +64,25 @@ Foam::rigidParticle::rigidParticle
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+void Foam::rigidParticle::constrainToPlane()
+{
+    if (planar_)
+    {
+        // Body z stays along world z: rotation about z only
+        U_.z() = 0;
+        omegaBody_.x() = 0;
+        omegaBody_.y() = 0;
+    }
+}
+
+
 void Foam::rigidParticle::halfKick(const scalar dt)
 {
+    if (motion_ != motionKind::free)
+    {
+        return;
+    }
+
     U_ += (0.5*dt/mass_)*F_;
 
     // Euler's equations in the body frame: I dw/dt = T_b - w x (I w)
@@ -62,14 +96,28 @@ void Foam::rigidParticle::halfKick(const scalar dt)
 
 Foam::vector Foam::rigidParticle::velocityAt(const point& p, const scalar dt) const
 {
-    // Velocities at the end of the step: the second half kick predicted
-    // with the forces of the step's start
     const tensor R(this->R());
-    const vector U = U_ + (0.5*dt/mass_)*F_;
-    const vector omegaB =
+    if (motion_ != motionKind::free || dt == 0)
+    {
+        return U_ + ((R & omegaBody_) ^ (p - x_));
+    }
+
+    // Velocities at the end of the step: the second half kick predicted
+    // with the force and torque the step started with
+    vector U = U_ + (0.5*dt/mass_)*Fstart_;
+    vector omegaB =
         omegaBody_
       + 0.5*dt
-       *(invInertia_ & ((T_ & R) - (omegaBody_ ^ (inertia_ & omegaBody_))));
+       *(
+            invInertia_
+          & ((Tstart_ & R) - (omegaBody_ ^ (inertia_ & omegaBody_)))
+        );
+    if (planar_)
+    {
+        U.z() = 0;
+        omegaB.x() = 0;
+        omegaB.y() = 0;
+    }
 
     return U + ((R & omegaB) ^ (p - x_));
 }
@@ -83,8 +131,27 @@ Foam::scalar Foam::rigidParticle::kineticEnergy() const
 }
 
 
+void Foam::rigidParticle::setMotion(const motionKind motion)
+{
+    motion_ = motion;
+    if (motion_ == motionKind::fixed)
+    {
+        U_ = Zero;
+        omegaBody_ = Zero;
+    }
+}
+
+
 void Foam::rigidParticle::kickDrift(const scalar dt)
 {
+    Fstart_ = F_;
+    Tstart_ = T_;
+
+    if (motion_ == motionKind::fixed)
+    {
+        return;
+    }
+
     halfKick(dt);
 
     x_ += dt*U_;

@@ -1,0 +1,547 @@
+/*---------------------------------------------------------------------------*\
+  dlmfdFoam: DLM/FD particle-resolved simulation of particulate flows
+-------------------------------------------------------------------------------
+License
+    This file is part of dlmfdFoam, an extension of OpenFOAM.
+
+    dlmfdFoam is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by the
+    Free Software Foundation, either version 3 of the License, or (at your
+    option) any later version. See <http://www.gnu.org/licenses/>.
+
+Description
+    Construction, sub-cycling and contact forces of the granular system.
+
+\*---------------------------------------------------------------------------*/
+
+#include "granularSystem.H"
+#include "narrowPhase.H"
+#include "granularInput.H"
+#include "sphere.H"
+
+#include <algorithm>
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::granularSystem::readCollision(const dictionary& collisionDict)
+{
+    subStepsPerContact_ =
+        collisionDict.getOrDefault<label>("subStepsPerContact", 20);
+    if (subStepsPerContact_ < 1)
+    {
+        FatalIOErrorInFunction(collisionDict)
+            << "subStepsPerContact = " << subStepsPerContact_
+            << " is not allowed; it must be >= 1 (seed 001 uses 20)"
+            << exit(FatalIOError);
+    }
+
+    skin_ = -1;
+    if (collisionDict.readIfPresent("skin", skin_) && !(skin_ >= 0))
+    {
+        FatalIOErrorInFunction(collisionDict)
+            << "skin = " << skin_ << " is not allowed; it must be >= 0 [m]"
+            << exit(FatalIOError);
+    }
+
+    const dictionary& domainDict = collisionDict.subDict("domain");
+    const point lo = domainDict.get<point>("min");
+    const point hi = domainDict.get<point>("max");
+    for (direction d = 0; d < 3; ++d)
+    {
+        if (!(hi[d] > lo[d]))
+        {
+            FatalIOErrorInFunction(domainDict)
+                << "domain: max " << hi << " must exceed min " << lo
+                << " in every direction" << exit(FatalIOError);
+        }
+    }
+    domain_ = boundBox(lo, hi);
+    periodic_ = domainDict.getOrDefault<FixedList<bool, 3>>
+    (
+        "periodic", FixedList<bool, 3>(false)
+    );
+
+    if (const dictionary* wallsDict = collisionDict.findDict("walls"))
+    {
+        for (const word& name : wallsDict->toc())
+        {
+            walls_.append(planeWall::read(name, wallsDict->subDict(name)));
+            wallMaterial_.append
+            (
+                materials_.addWallMaterial(walls_.last().material)
+            );
+        }
+    }
+
+    laws_.reset(new contactPairTable(collisionDict, materials_));
+    contactsOn_ = laws_->lawName() != "none";
+}
+
+
+void Foam::granularSystem::updateParticleData()
+{
+    const label n = size();
+    radius_.setSize(n);
+    Fext_.setSize(n, Zero);
+    Text_.setSize(n, Zero);
+    R_.setSize(n);
+
+    scalar rMax = 0, Dmin = GREAT;
+    for (label i = 0; i < size(); ++i)
+    {
+        radius_[i] = particles_[i].shape().boundingRadius();
+        rMax = max(rMax, radius_[i]);
+        Dmin = min(Dmin, particles_[i].shape().equivalentDiameter());
+        R_[i] = particles_[i].R();
+    }
+    if (skin_ < 0 && n)
+    {
+        skin_ = 0.1*Dmin;
+    }
+
+    // Shortest contact of the scene: each pair of materials at the
+    // smallest reduced mass among the particles present
+    scalarList mMin(materials_.nParticleMaterials(), GREAT);
+    for (label i = 0; i < size(); ++i)
+    {
+        mMin[materialOf_[i]] = min(mMin[materialOf_[i]], particles_[i].mass());
+    }
+    scalar Tc = VGREAT;
+    if (contactsOn_)
+    {
+        forAll(mMin, a)
+        {
+            if (mMin[a] == GREAT)
+            {
+                continue;
+            }
+            forAll(mMin, b)
+            {
+                if (mMin[b] == GREAT)
+                {
+                    continue;
+                }
+                const scalar M = mMin[a]*mMin[b]/(mMin[a] + mMin[b]);
+                Tc = min(Tc, laws_->law(a, b).contactTime(M));
+            }
+            forAll(walls_, w)
+            {
+                Tc = min
+                (
+                    Tc, laws_->law(a, wallMaterial_[w]).contactTime(mMin[a])
+                );
+            }
+        }
+    }
+    dtMax_ = Tc < VGREAT ? Tc/subStepsPerContact_ : VGREAT;
+
+    // Cells no narrower than the interaction distance, and no more of
+    // them than particles: a pair search never sweeps a mostly empty grid
+    const scalar cellWidth = max
+    (
+        2*rMax + max(skin_, scalar(0)),
+        std::cbrt(domain_.volume()/max(n, label(1)))
+    );
+    cells_.reset(new linkedCells(domain_, periodic_, cellWidth));
+    xAtBuild_.clear();
+    history_.clear();
+}
+
+
+void Foam::granularSystem::wrapPeriodic()
+{
+    for (direction d = 0; d < 3; ++d)
+    {
+        if (!periodic_[d])
+        {
+            continue;
+        }
+        const scalar lo = domain_.min()[d];
+        const scalar L = domain_.span()[d];
+        for (rigidParticle& p : particles_)
+        {
+            point x = p.position();
+            if (x[d] < lo || x[d] >= lo + L)
+            {
+                x[d] -= L*std::floor((x[d] - lo)/L);
+                p.setPosition(x);
+            }
+        }
+    }
+}
+
+
+void Foam::granularSystem::updateCandidates()
+{
+    bool rebuild = xAtBuild_.size() != size();
+    if (!rebuild)
+    {
+        const scalar limit2 = sqr(0.5*skin_);
+        for (label i = 0; i < size(); ++i)
+        {
+            if
+            (
+                magSqr
+                (
+                    cells_->separation(particles_[i].position(), xAtBuild_[i])
+                )
+              > limit2
+            )
+            {
+                rebuild = true;
+                break;
+            }
+        }
+    }
+    if (!rebuild)
+    {
+        return;
+    }
+
+    xAtBuild_.setSize(size());
+    for (label i = 0; i < size(); ++i)
+    {
+        xAtBuild_[i] = particles_[i].position();
+    }
+    candidates_.clear();
+    cells_->findPairs(xAtBuild_, radius_, skin_, candidates_);
+    // Canonical order: the forces are summed in the same order whenever
+    // the list was built, so that a restart continues bitwise
+    std::sort(candidates_.begin(), candidates_.end());
+    ++stats_.nListBuilds;
+}
+
+
+Foam::vector Foam::granularSystem::contactForce
+(
+    const contactLaw& law,
+    const contactGeometry& c,
+    const vector& Urel,
+    const scalar M,
+    const scalar dt,
+    const std::uint64_t key
+)
+{
+    if (!law.needsHistory())
+    {
+        vector unused(Zero);
+        return law.force(c.overlap, c.normal, Urel, M, dt, unused);
+    }
+
+    vector h(Zero);
+    const auto iter = history_.find(key);
+    if (iter != history_.end())
+    {
+        h = iter->second;
+    }
+    const vector F = law.force(c.overlap, c.normal, Urel, M, dt, h);
+    historyNew_[key] = h;
+    return F;
+}
+
+
+void Foam::granularSystem::addContactForces(const scalar dt)
+{
+    using motionKind = rigidParticle::motionKind;
+
+    updateCandidates();
+    stats_.nCandidatePairs = candidates_.size();
+
+    contactGeometry c;
+
+    for (const labelPair& ij : candidates_)
+    {
+        const label i = ij.first(), j = ij.second();
+        rigidParticle& pi = particles_[i];
+        rigidParticle& pj = particles_[j];
+        const bool iMoves = pi.motion() == motionKind::free;
+        const bool jMoves = pj.motion() == motionKind::free;
+        if (!iMoves && !jMoves)
+        {
+            continue;
+        }
+
+        const vector d = cells_->separation(pi.position(), pj.position());
+        if (magSqr(d) > sqr(radius_[i] + radius_[j]))
+        {
+            continue;
+        }
+        // The partner's image nearest to i
+        const point xjImage = pi.position() - d;
+        const vector shift = xjImage - pj.position();
+
+        const posedShape bi{pi.shape(), pi.position(), R_[i]};
+        const posedShape bj{pj.shape(), xjImage, R_[j]};
+        if (!narrowPhase::shapeShape(bi, bj, c))
+        {
+            continue;
+        }
+
+        const scalar M =
+            !iMoves ? pj.mass()
+          : !jMoves ? pi.mass()
+          : pi.mass()*pj.mass()/(pi.mass() + pj.mass());
+
+        const vector Urel =
+            pi.velocityAt(c.position, dt)
+          - pj.velocityAt(c.position - shift, dt);
+
+        const vector F = contactForce
+        (
+            laws_->law(materialOf_[i], materialOf_[j]),
+            c, Urel, M, dt, pairKey(i, j)
+        );
+        pi.addForceAt(F, c.position);
+        pj.addForceAt(-F, c.position - shift);
+
+        ++stats_.nContacts;
+        stats_.maxOverlapRatio = max
+        (
+            stats_.maxOverlapRatio,
+            c.overlap
+           /min
+            (
+                pi.shape().equivalentDiameter(),
+                pj.shape().equivalentDiameter()
+            )
+        );
+    }
+
+    for (label i = 0; i < size(); ++i)
+    {
+        rigidParticle& pi = particles_[i];
+        if (pi.motion() != motionKind::free)
+        {
+            continue;
+        }
+        forAll(walls_, w)
+        {
+            const planeWall& wall = walls_[w];
+            if (wall.distance(pi.position()) > radius_[i])
+            {
+                continue;
+            }
+            const posedShape bi{pi.shape(), pi.position(), R_[i]};
+            if (!narrowPhase::shapePlane(bi, wall.origin, wall.normal, c))
+            {
+                continue;
+            }
+            const vector Urel = pi.velocityAt(c.position, dt);
+            const vector F = contactForce
+            (
+                laws_->law(materialOf_[i], wallMaterial_[w]),
+                c, Urel, pi.mass(), dt, wallKey(i, w)
+            );
+            pi.addForceAt(F, c.position);
+
+            ++stats_.nWallContacts;
+            stats_.maxOverlapRatio = max
+            (
+                stats_.maxOverlapRatio,
+                c.overlap/pi.shape().equivalentDiameter()
+            );
+        }
+    }
+
+    // Contacts that ended lose their history
+    history_.swap(historyNew_);
+    historyNew_.clear();
+}
+
+
+void Foam::granularSystem::subStep(const scalar dt)
+{
+    for (rigidParticle& p : particles_)
+    {
+        p.kickDrift(dt);
+    }
+    wrapPeriodic();
+
+    for (label i = 0; i < size(); ++i)
+    {
+        rigidParticle& p = particles_[i];
+        R_[i] = p.R();
+        p.clearForces();
+        p.addForce(p.mass()*g_ + Fext_[i]);
+        p.addTorque(Text_[i]);
+    }
+
+    if (contactsOn_)
+    {
+        addContactForces(dt);
+    }
+
+    for (rigidParticle& p : particles_)
+    {
+        p.kick(dt);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::granularSystem::granularSystem
+(
+    const dictionary& particleDict,
+    const dictionary& collisionDict
+)
+:
+    shapes_(),
+    shapeIndex_(),
+    materials_(particleDict.subDict("materials")),
+    walls_(),
+    wallMaterial_(),
+    laws_(),
+    domain_(),
+    periodic_(false),
+    subStepsPerContact_(20),
+    skin_(-1),
+    g_(Zero),
+    contactsOn_(true),
+    dtMax_(VGREAT)
+{
+    const dictionary& shapesDict = particleDict.subDict("shapes");
+    for (const word& name : shapesDict.toc())
+    {
+        if (!shapesDict.isDict(name))
+        {
+            FatalIOErrorInFunction(shapesDict)
+                << "shape " << name << " is not a dictionary; expected "
+                << name << " { type <shape>; ... }" << exit(FatalIOError);
+        }
+        shapeIndex_.insert(name, shapes_.size());
+        shapes_.append(particleShape::New(name, shapesDict.subDict(name)));
+    }
+    if (shapes_.empty())
+    {
+        FatalIOErrorInFunction(shapesDict)
+            << "no shape given in " << shapesDict.name()
+            << exit(FatalIOError);
+    }
+
+    collisionDict_ = collisionDict;
+    readCollision(collisionDict);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::granularSystem::addWalls(const UList<planeWall>& walls)
+{
+    for (const planeWall& w : walls)
+    {
+        walls_.append(w);
+        wallMaterial_.append(materials_.addWallMaterial(w.material));
+    }
+    // New wall materials need their pair laws
+    laws_.reset(new contactPairTable(collisionDict_, materials_));
+    updateParticleData();
+}
+
+
+Foam::label Foam::granularSystem::addParticle
+(
+    const label id,
+    const word& shapeName,
+    const word& materialName,
+    const point& x,
+    const quaternion& q
+)
+{
+    const label shapei = shapeIndex_.lookup(shapeName, -1);
+    if (shapei < 0)
+    {
+        FatalErrorInFunction
+            << "particle " << id << ": shape " << shapeName
+            << " is not one of the shapes " << shapeIndex_.sortedToc()
+            << exit(FatalError);
+    }
+    const label materiali = materials_.find(materialName);
+    if (materiali < 0 || materials_.isWall(materiali))
+    {
+        FatalErrorInFunction
+            << "particle " << id << ": material " << materialName
+            << " is not one of the particle materials "
+            << SubList<word>
+               (
+                   materials_.names(), materials_.nParticleMaterials()
+               )
+            << exit(FatalError);
+    }
+
+    const label i = size();
+    particles_.emplace_back
+    (
+        shapes_[shapei], materials_.density(materiali), x, q
+    );
+    ids_.append(id);
+    shapeOf_.append(shapei);
+    materialOf_.append(materiali);
+    return i;
+}
+
+
+void Foam::granularSystem::clearParticles()
+{
+    particles_.clear();
+    ids_.clear();
+    shapeOf_.clear();
+    materialOf_.clear();
+    updateParticleData();
+}
+
+
+void Foam::granularSystem::updated()
+{
+    updateParticleData();
+}
+
+
+Foam::scalar Foam::granularSystem::kineticEnergy() const
+{
+    scalar E = 0;
+    for (const rigidParticle& p : particles_)
+    {
+        E += p.kineticEnergy();
+    }
+    return E;
+}
+
+
+Foam::vector Foam::granularSystem::momentum() const
+{
+    vector P(Zero);
+    for (const rigidParticle& p : particles_)
+    {
+        P += p.mass()*p.velocity();
+    }
+    return P;
+}
+
+
+void Foam::granularSystem::clearExternalForces()
+{
+    Fext_ = Zero;
+    Text_ = Zero;
+}
+
+
+Foam::label Foam::granularSystem::evolve(const scalar Deltat)
+{
+    stats_ = statistics();
+
+    const label n =
+        dtMax_ < VGREAT
+      ? max(label(1), label(std::ceil(Deltat/dtMax_*(1 - 1e-12))))
+      : 1;
+    const scalar dt = Deltat/n;
+    for (label k = 0; k < n; ++k)
+    {
+        subStep(dt);
+    }
+    stats_.nSubSteps = n;
+    return n;
+}
+
+
+// ************************************************************************* //

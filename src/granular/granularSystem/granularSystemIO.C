@@ -1,0 +1,274 @@
+/*---------------------------------------------------------------------------*\
+  dlmfdFoam: DLM/FD particle-resolved simulation of particulate flows
+-------------------------------------------------------------------------------
+License
+    This file is part of dlmfdFoam, an extension of OpenFOAM.
+
+    dlmfdFoam is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by the
+    Free Software Foundation, either version 3 of the License, or (at your
+    option) any later version. See <http://www.gnu.org/licenses/>.
+
+Description
+    Particle state files: <time>/particles.
+
+    \verbatim
+    particles
+    (
+    //  id shape material motion position      orientation (w x y z)
+    //     [velocity] [angular velocity, body] [force] [torque]
+        (0 cube glass free (0.01 0.02 0.03) (1 0 0 0))
+        (1 ball glass free (0.05 0.02 0.03) (1 0 0 0) (0 0 -0.1) (0 0 0))
+    );
+    contacts    // laws with history: (i j) per contact, j < 0 for wall -1-j
+    (
+        (0 1 (1e-6 0 0))
+    );
+    \endverbatim
+
+    Velocities, forces and torques are optional in a file written by hand
+    (zero); the solver writes them all, with 17 digits, so that a restart
+    continues exactly.
+
+\*---------------------------------------------------------------------------*/
+
+#include "granularSystem.H"
+#include "IFstream.H"
+#include "OFstream.H"
+#include "IOobject.H"
+#include "OSspecific.H"
+#include "Tuple2.H"
+#include "Map.H"
+#include <algorithm>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+    using namespace Foam;
+
+    //- A vector "(x y z)"
+    vector readVector(Istream& is)
+    {
+        vector v;
+        is >> v;
+        return v;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::granularSystem::readParticles(const fileName& file)
+{
+    IFstream ifs(file);
+    if (!ifs.good())
+    {
+        FatalErrorInFunction
+            << "cannot open the particle file " << file
+            << exit(FatalError);
+    }
+    const dictionary dict(ifs);
+
+    particles_.clear();
+    ids_.clear();
+    shapeOf_.clear();
+    materialOf_.clear();
+
+    ITstream& is = dict.lookup("particles");
+    Map<label> seen;
+
+    is.readBegin("particles");
+    token t(is);
+    while (!(t.isPunctuation() && t.pToken() == token::END_LIST))
+    {
+        if (!(t.isPunctuation() && t.pToken() == token::BEGIN_LIST))
+        {
+            FatalIOErrorInFunction(is)
+                << "in " << file << " line " << t.lineNumber()
+                << ": expected a particle (id shape material motion"
+                << " (x y z) (w x y z) ...), found " << t.info()
+                << exit(FatalIOError);
+        }
+        const label id = readLabel(is);
+        const word shapeName(is);
+        const word materialName(is);
+        const word motionName(is);
+        const label line = is.lineNumber();
+
+        if (!rigidParticle::motionKindNames.found(motionName))
+        {
+            FatalIOErrorInFunction(is)
+                << "in " << file << " line " << line << ": particle " << id
+                << ": motion " << motionName << " is not one of "
+                << rigidParticle::motionKindNames.sortedToc()
+                << exit(FatalIOError);
+        }
+        if (!seen.insert(id, size()))
+        {
+            FatalIOErrorInFunction(is)
+                << "in " << file << " line " << line << ": particle id "
+                << id << " is given twice" << exit(FatalIOError);
+        }
+
+        const point x = readVector(is);
+
+        is.readBegin("orientation");
+        scalar q[4];
+        for (scalar& qk : q)
+        {
+            qk = readScalar(is);
+        }
+        is.readEnd("orientation");
+        const scalar magQ = std::sqrt(sqr(q[0]) + sqr(q[1]) + sqr(q[2]) + sqr(q[3]));
+        if (!(magQ > SMALL))
+        {
+            FatalIOErrorInFunction(is)
+                << "in " << file << " line " << line << ": particle " << id
+                << ": orientation (" << q[0] << ' ' << q[1] << ' ' << q[2]
+                << ' ' << q[3] << ") is not a rotation; give a unit"
+                << " quaternion (w x y z), (1 0 0 0) for none"
+                << exit(FatalIOError);
+        }
+
+        // Optional: velocity, body angular velocity, force, torque
+        FixedList<vector, 4> extra(Zero);
+        label nExtra = 0;
+        token next(is);
+        while (next.isPunctuation() && next.pToken() == token::BEGIN_LIST)
+        {
+            if (nExtra == 4)
+            {
+                FatalIOErrorInFunction(is)
+                    << "in " << file << " line " << next.lineNumber()
+                    << ": particle " << id << " has more than four vectors"
+                    << " after its orientation (velocity, angular velocity,"
+                    << " force, torque)" << exit(FatalIOError);
+            }
+            is.putBack(next);
+            is >> extra[nExtra++];
+            next = token(is);
+        }
+        if (!(next.isPunctuation() && next.pToken() == token::END_LIST))
+        {
+            FatalIOErrorInFunction(is)
+                << "in " << file << " line " << next.lineNumber()
+                << ": particle " << id << ": expected ')' or a vector,"
+                << " found " << next.info() << exit(FatalIOError);
+        }
+
+        const label i = addParticle
+        (
+            id, shapeName, materialName, x,
+            quaternion(q[0], vector(q[1], q[2], q[3]))
+        );
+        rigidParticle& p = particles_[i];
+        if (mag(magQ - 1) < 1e-14)
+        {
+            // Written by the solver: kept to the bit
+            p.restoreOrientation(quaternion(q[0], vector(q[1], q[2], q[3])));
+        }
+        p.setMotion(rigidParticle::motionKindNames[motionName]);
+        p.setVelocity(extra[0]);
+        p.setOmegaBody(extra[1]);
+        p.setStartForces(extra[2], extra[3]);
+
+        t = token(is);
+    }
+
+    updateParticleData();
+
+    // Contact history, for the laws that keep one
+    if (dict.found("contacts"))
+    {
+        List<Tuple2<labelPair, vector>> contacts(dict.lookup("contacts"));
+        for (const auto& c : contacts)
+        {
+            const label i = c.first().first(), j = c.first().second();
+            if (i < 0 || i >= size() || j >= size())
+            {
+                FatalIOErrorInFunction(dict)
+                    << "in " << file << ": contact (" << i << ' ' << j
+                    << ") names a particle that is not in the file"
+                    << exit(FatalIOError);
+            }
+            history_[j >= 0 ? pairKey(i, j) : wallKey(i, -1 - j)] =
+                c.second();
+        }
+    }
+}
+
+
+void Foam::granularSystem::writeParticles(const fileName& dir) const
+{
+    mkDir(dir);
+    const fileName file(dir/"particles");
+    const fileName tmp(file + ".tmp");
+    {
+        OFstream os(tmp);
+        os.precision(17);
+        IOobject::writeBanner(os);
+        os  << "FoamFile\n{\n"
+            << "    version     2.0;\n"
+            << "    format      ascii;\n"
+            << "    class       dictionary;\n"
+            << "    location    \"" << dir.name() << "\";\n"
+            << "    object      particles;\n"
+            << "}\n";
+        IOobject::writeDivider(os);
+        os  << "\n// id shape material motion position (w x y z) velocity"
+            << " omegaBody force torque\n"
+            << "particles\n(\n";
+        for (label i = 0; i < size(); ++i)
+        {
+            const rigidParticle& p = particles_[i];
+            const quaternion& q = p.orientation();
+            os  << '(' << ids_[i] << ' ' << shapeName(i) << ' '
+                << materialName(i) << ' '
+                << rigidParticle::motionKindNames[p.motion()] << ' '
+                << p.position() << " ("
+                << q.w() << ' ' << q.v().x() << ' ' << q.v().y() << ' '
+                << q.v().z() << ") "
+                << p.velocity() << ' ' << p.omegaBody() << ' '
+                << p.force() << ' ' << p.torque() << ")\n";
+        }
+        os  << ");\n";
+
+        if (!history_.empty())
+        {
+            // Sorted, so that equal states write equal files
+            List<std::pair<std::uint64_t, vector>> sorted
+            (
+                history_.begin(), history_.end()
+            );
+            std::sort
+            (
+                sorted.begin(), sorted.end(),
+                [](const auto& a, const auto& b){ return a.first < b.first; }
+            );
+            os  << "\ncontacts\n(\n";
+            for (const auto& c : sorted)
+            {
+                const label i = label(std::int32_t(c.first >> 32));
+                const label j = label(std::int32_t(c.first & 0xffffffffu));
+                os  << "((" << i << ' ' << j << ") " << c.second << ")\n";
+            }
+            os  << ");\n";
+        }
+        IOobject::writeEndDivider(os);
+        if (!os.good())
+        {
+            FatalErrorInFunction
+                << "writing " << tmp << " failed" << exit(FatalError);
+        }
+    }
+    // Atomic on POSIX: a reader sees the old file or the new one
+    if (!Foam::mv(tmp, file))
+    {
+        FatalErrorInFunction
+            << "cannot rename " << tmp << " to " << file << exit(FatalError);
+    }
+}
+
+
+// ************************************************************************* //
