@@ -294,6 +294,75 @@ TEST(granularSystem, slidingSphereStartsRollingAtClosedFormTime)
 }
 
 
+TEST(granularSystem, cubesOnAFloorAndInAStackComeToRest)
+{
+    // One cube dropped on a floor and three cubes dropped in a stack, each
+    // tilted and offset a little: after 10^5 sub-steps at T_c/20 every
+    // cube moves slower than 1e-6 u_g (u_g = sqrt(g D)), and over the last
+    // 5 10^4 sub-steps no cube creeps by more than 1e-6 D nor turns by
+    // more than 1e-6 rad.
+    const scalar a = 0.01, g = 9.81;
+    for (const label nCubes : {1, 3})
+    {
+        auto sys = makeSystem
+        (
+            "cube { type cube; edge 0.01; }",
+            "en 0.75; muc 0.5; maxOverlapRatio 1e-3; impactVelocity 0.5;"
+            " referenceDiameter 0.0124;",
+            "floor { point (0 0 0); normal (0 0 1); material steel; }",
+            "min (-0.05 -0.05 -0.01); max (0.05 0.05 0.1);"
+        );
+        sys->setGravity(vector(0, 0, -g));
+        for (label i = 0; i < nCubes; ++i)
+        {
+            sys->addParticle
+            (
+                i, "cube", "glass",
+                point(0.0007*i, -0.0004*i, 0.5*a + 0.0005 + i*(a + 0.0003)),
+                quaternion(normalised(vector(1, 1 + i, 0)), 0.01)
+            );
+        }
+        sys->updated();
+        const scalar D = sys->shapes()[0].equivalentDiameter();
+        const scalar ug = std::sqrt(g*D);
+        const scalar dt = sys->maxSubStep();
+
+        List<point> x0(nCubes);
+        List<quaternion> q0(nCubes);
+        for (label k = 0; k < 100000; ++k)
+        {
+            sys->evolve(dt);
+            if (k == 50000)
+            {
+                for (label i = 0; i < nCubes; ++i)
+                {
+                    x0[i] = sys->particle(i).position();
+                    q0[i] = sys->particle(i).orientation();
+                }
+            }
+        }
+        scalar speed = 0, creep = 0, turn = 0;
+        for (label i = 0; i < nCubes; ++i)
+        {
+            const rigidParticle& p = sys->particle(i);
+            speed = max(speed, mag(p.velocity()) + mag(p.omega())*0.5*a*std::sqrt(3.0));
+            creep = max(creep, mag(p.position() - x0[i]));
+            const quaternion dq = p.orientation()*inv(q0[i]);
+            turn = max(turn, 2*mag(dq.v()));
+        }
+        std::cout << nCubes << " cube(s): residual speed " << speed/ug
+            << " u_g, creep " << creep/D << " D, turn " << turn
+            << " rad over the last 5e4 sub-steps; max overlap "
+            << sys->stats().maxOverlapRatio << " D" << nl;
+        EXPECT_LT(speed, 1e-6*ug) << nCubes;
+        EXPECT_LT(creep, 1e-6*D) << nCubes;
+        EXPECT_LT(turn, 1e-6) << nCubes;
+        // The stack stands: the top cube at the height of three
+        EXPECT_GT(sys->particle(nCubes - 1).position().z(), (nCubes - 0.5)*a - 0.01*a);
+    }
+}
+
+
 TEST(granularSystem, pairCollisionsConserveMomentum)
 {
     // Cube against tetrahedron and sphere against cube, oblique, with

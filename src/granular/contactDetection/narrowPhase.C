@@ -235,6 +235,7 @@ bool Foam::narrowPhase::sphereSphere
     // Concentric spheres have no normal: any direction will do
     contact.normal = dist > VSMALL ? d/dist : vector(1, 0, 0);
     contact.overlap = overlap;
+    contact.spread = 0;
     // Midway through the overlap lens
     contact.position = cj + (rj - 0.5*overlap)*contact.normal;
     return true;
@@ -259,6 +260,7 @@ bool Foam::narrowPhase::spherePlane
     contact.normal = n;
     contact.overlap = overlap;
     contact.position = c - (r - 0.5*overlap)*n;
+    contact.spread = 0;
     return true;
 }
 
@@ -371,6 +373,7 @@ bool Foam::narrowPhase::spherePolyhedron
 
     contact.normal = poly.R & nBody;
     contact.overlap = overlap;
+    contact.spread = 0;
     // Midway between the polyhedron's surface and the sphere's deepest point
     contact.position = poly.toWorld(closest) - 0.5*overlap*contact.normal;
     return true;
@@ -399,6 +402,7 @@ bool Foam::narrowPhase::shapePlane
 
     contact.normal = n;
     contact.overlap = overlap;
+    contact.spread = 0;
 
     const auto* poly =
         dynamic_cast<const particleShapes::convexPolyhedron*>(&body.shape);
@@ -423,6 +427,22 @@ bool Foam::narrowPhase::shapePlane
     }
     const point onBody = weighted/sumDepth;
     contact.position = onBody + (((p0 - onBody) & n) - 0.5*overlap)*n;
+
+    // Spread of the vertices within the overlap of the deepest one (a
+    // face lying on the plane: all its corners)
+    scalar r2 = 0;
+    label nNear = 0;
+    for (const point& v : poly->points())
+    {
+        const point x = body.toWorld(v);
+        if (((p0 - x) & n) > -overlap)
+        {
+            const vector d = x - onBody;
+            r2 += magSqr(d - (d & n)*n);
+            ++nNear;
+        }
+    }
+    contact.spread = nNear > 1 ? std::sqrt(r2/nNear) : 0;
     return true;
 }
 
@@ -464,6 +484,7 @@ bool Foam::narrowPhase::shapeShapeGJK
     // is -dir
     contact.normal = -normalised(vector(dir.v[0], dir.v[1], dir.v[2]));
     contact.overlap = depth;
+    contact.spread = 0;
     contact.position = point(pos.v[0], pos.v[1], pos.v[2]);
     return true;
 }
@@ -548,6 +569,13 @@ void Foam::narrowPhase::polyhedronContactPoint
     y /= sumW;
     const scalar h = 0.5*(Hi(x, y) + Hj(x, y));
     contact.position = x*e1 + y*e2 + h*n;
+
+    scalar r2 = 0;
+    for (const featurePoint& p : region)
+    {
+        r2 += sqr(p.x - x) + sqr(p.y - y);
+    }
+    contact.spread = std::sqrt(r2/region.size());
 }
 
 

@@ -286,13 +286,20 @@ void Foam::granularSystem::addContactForces(const scalar dt)
             pi.velocityAt(c.position, dt)
           - pj.velocityAt(c.position - shift, dt);
 
-        const vector F = contactForce
-        (
-            laws_->law(materialOf_[i], materialOf_[j]),
-            c, Urel, M, dt, pairKey(i, j)
-        );
+        const contactLaw& law = laws_->law(materialOf_[i], materialOf_[j]);
+        const vector F = contactForce(law, c, Urel, M, dt, pairKey(i, j));
         pi.addForceAt(F, c.position);
         pj.addForceAt(-F, c.position - shift);
+        if (c.spread > 0)
+        {
+            const vector T = law.twistTorque
+            (
+                c.normal, (pi.omega() - pj.omega()) & c.normal,
+                c.spread, M, F & c.normal
+            );
+            pi.addTorque(T);
+            pj.addTorque(-T);
+        }
 
         ++stats_.nContacts;
         stats_.maxOverlapRatio = max
@@ -327,12 +334,21 @@ void Foam::granularSystem::addContactForces(const scalar dt)
                 continue;
             }
             const vector Urel = pi.velocityAt(c.position, dt);
-            const vector F = contactForce
-            (
-                laws_->law(materialOf_[i], wallMaterial_[w]),
-                c, Urel, pi.mass(), dt, wallKey(i, w)
-            );
+            const contactLaw& law = laws_->law(materialOf_[i], wallMaterial_[w]);
+            const vector F =
+                contactForce(law, c, Urel, pi.mass(), dt, wallKey(i, w));
             pi.addForceAt(F, c.position);
+            if (c.spread > 0)
+            {
+                pi.addTorque
+                (
+                    law.twistTorque
+                    (
+                        c.normal, pi.omega() & c.normal, c.spread,
+                        pi.mass(), F & c.normal
+                    )
+                );
+            }
 
             ++stats_.nWallContacts;
             stats_.maxOverlapRatio = max

@@ -156,6 +156,21 @@ Foam::scalar Foam::contactLaws::hookeanSpringDashpot::contactTime
 }
 
 
+Foam::vector Foam::contactLaws::hookeanSpringDashpot::twistTorque
+(
+    const vector& n,
+    const scalar spin,
+    const scalar spread,
+    const scalar M,
+    const scalar Fn
+) const
+{
+    const scalar T = -2*gammat(M)*M*sqr(spread)*spin;
+    const scalar cap = muc_*max(Fn, scalar(0))*spread;
+    return (mag(T) > cap ? sign(T)*cap : T)*n;
+}
+
+
 Foam::vector Foam::contactLaws::hookeanSpringDashpot::force
 (
     const scalar delta,
