@@ -13,6 +13,8 @@ Class
 \*---------------------------------------------------------------------------*/
 
 #include <ccd/ccd.h>
+#include <cfenv>
+#include <cmath>
 
 #include "narrowPhase.H"
 #include "sphere.H"
@@ -471,11 +473,33 @@ bool Foam::narrowPhase::shapeShapeGJK
     // near a cube's edge was measured 0.1 edge off the true depth.
     ccd_real_t depth;
     ccd_vec3_t dir, pos;
-    if (ccdGJKPenetration(&bi, &bj, &ccd, &depth, &dir, &pos) != 0)
+
+    // libccd divides by zero on degenerate polytopes (touching faces):
+    // run it with the floating-point traps of OpenFOAM (FOAM_SIGFPE) held,
+    // then restore them; a non-finite answer falls back to MPR
+    fenv_t env;
+    feholdexcept(&env);
+    int status = ccdGJKPenetration(&bi, &bj, &ccd, &depth, &dir, &pos);
+    const auto finite = [&]()
     {
-        return false;
+        return
+            std::isfinite(depth)
+         && std::isfinite(dir.v[0]) && std::isfinite(dir.v[1])
+         && std::isfinite(dir.v[2]) && std::isfinite(pos.v[0])
+         && std::isfinite(pos.v[1]) && std::isfinite(pos.v[2]);
+    };
+    if (status == 0 && !finite())
+    {
+        status = ccdMPRPenetration(&bi, &bj, &ccd, &depth, &dir, &pos);
+        if (status == 0 && !finite())
+        {
+            status = -1;
+        }
     }
-    if (!(depth > 0))
+    feclearexcept(FE_ALL_EXCEPT);
+    fesetenv(&env);
+
+    if (status != 0 || !(depth > 0))
     {
         return false;
     }

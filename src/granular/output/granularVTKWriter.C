@@ -1,0 +1,274 @@
+/*---------------------------------------------------------------------------*\
+  dlmfdFoam: DLM/FD particle-resolved simulation of particulate flows
+-------------------------------------------------------------------------------
+License
+    This file is part of dlmfdFoam, an extension of OpenFOAM.
+
+    dlmfdFoam is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by the
+    Free Software Foundation, either version 3 of the License, or (at your
+    option) any later version. See <http://www.gnu.org/licenses/>.
+
+Description
+    VTK polydata of the particles with .series files.
+
+\*---------------------------------------------------------------------------*/
+
+#include "granularVTKWriter.H"
+#include "sphere.H"
+#include "convexPolyhedron.H"
+#include "OFstream.H"
+#include "IFstream.H"
+#include "OSspecific.H"
+
+#include <fstream>
+#include <sstream>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+    using namespace Foam;
+
+    void writeVectors
+    (
+        Ostream& os,
+        const char* name,
+        const UList<vector>& v
+    )
+    {
+        os  << "<DataArray type=\"Float64\" Name=\"" << name
+            << "\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+        for (const vector& x : v)
+        {
+            os  << x.x() << ' ' << x.y() << ' ' << x.z() << '\n';
+        }
+        os  << "</DataArray>\n";
+    }
+
+    template<class Type>
+    void writeScalars
+    (
+        Ostream& os,
+        const char* type,
+        const char* name,
+        const UList<Type>& v
+    )
+    {
+        os  << "<DataArray type=\"" << type << "\" Name=\"" << name
+            << "\" format=\"ascii\">\n";
+        for (const Type& x : v)
+        {
+            os  << x << '\n';
+        }
+        os  << "</DataArray>\n";
+    }
+
+    //- Write to a temporary file, then rename: no half-written file
+    void commit(const fileName& tmp, const fileName& file)
+    {
+        if (!Foam::mv(tmp, file))
+        {
+            FatalErrorInFunction
+                << "cannot rename " << tmp << " to " << file
+                << exit(FatalError);
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::List<Foam::Tuple2<Foam::word, Foam::scalar>>
+Foam::granularVTKWriter::readSeries(const fileName& file, const scalar t)
+{
+    DynamicList<Tuple2<word, scalar>> entries;
+    std::ifstream is(file);
+    std::string line;
+    // One entry per line, as writeSeries writes them:
+    //   { "name" : "spheres_3.vtp", "time" : 0.3 },
+    while (std::getline(is, line))
+    {
+        const auto n0 = line.find("\"name\"");
+        const auto t0 = line.find("\"time\"");
+        if (n0 == std::string::npos || t0 == std::string::npos)
+        {
+            continue;
+        }
+        const auto q1 = line.find('"', line.find(':', n0) + 1);
+        const auto q2 = line.find('"', q1 + 1);
+        const std::string name = line.substr(q1 + 1, q2 - q1 - 1);
+        const scalar time = std::stod(line.substr(line.find(':', t0) + 1));
+        if (time < t)
+        {
+            entries.append(Tuple2<word, scalar>(word(name), time));
+        }
+    }
+    return List<Tuple2<word, scalar>>(std::move(entries));
+}
+
+
+void Foam::granularVTKWriter::writeSeries
+(
+    const fileName& file,
+    const UList<Tuple2<word, scalar>>& entries
+)
+{
+    const fileName tmp(file + ".tmp");
+    {
+        OFstream os(tmp);
+        os.precision(12);
+        os  << "{\n  \"file-series-version\" : \"1.0\",\n  \"files\" : [\n";
+        forAll(entries, i)
+        {
+            os  << "    { \"name\" : \"" << entries[i].first()
+                << "\", \"time\" : " << entries[i].second() << " }"
+                << (i + 1 < entries.size() ? "," : "") << '\n';
+        }
+        os  << "  ]\n}\n";
+    }
+    commit(tmp, file);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::granularVTKWriter::granularVTKWriter
+(
+    const fileName& dir,
+    const scalar startTime
+)
+:
+    dir_(dir),
+    polyhedra_(readSeries(dir/"polyhedra.vtp.series", startTime)),
+    spheres_(readSeries(dir/"spheres.vtp.series", startTime))
+{
+    mkDir(dir_);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::granularVTKWriter::write
+(
+    const granularSystem& system,
+    const scalar t,
+    const label index
+)
+{
+    // Spheres: one point each
+    DynamicList<point> centres;
+    DynamicList<scalar> diameters;
+    DynamicList<label> sphereIds;
+    DynamicList<vector> sphereU, sphereOmega;
+
+    // Polyhedra: their faces
+    DynamicList<point> points;
+    DynamicList<label> connectivity, offsets, faceIds;
+    DynamicList<vector> faceU, faceOmega;
+
+    for (label i = 0; i < system.size(); ++i)
+    {
+        const rigidParticle& p = system.particle(i);
+        if (const auto* s = isA<particleShapes::sphere>(p.shape()))
+        {
+            centres.append(p.position());
+            diameters.append(2*s->radius());
+            sphereIds.append(system.id(i));
+            sphereU.append(p.velocity());
+            sphereOmega.append(p.omega());
+            continue;
+        }
+        const auto* poly = isA<particleShapes::convexPolyhedron>(p.shape());
+        if (!poly)
+        {
+            continue;
+        }
+        const tensor R = p.R();
+        const label start = points.size();
+        for (const point& v : poly->points())
+        {
+            points.append(p.position() + (R & v));
+        }
+        for (const face& f : poly->faces())
+        {
+            for (const label v : f)
+            {
+                connectivity.append(start + v);
+            }
+            offsets.append(connectivity.size());
+            faceIds.append(system.id(i));
+            faceU.append(p.velocity());
+            faceOmega.append(p.omega());
+        }
+    }
+
+    const word polyName("polyhedra_" + Foam::name(index) + ".vtp");
+    const word sphereName("spheres_" + Foam::name(index) + ".vtp");
+
+    {
+        const fileName file(dir_/polyName);
+        {
+            OFstream os(file + ".tmp");
+            os.precision(10);
+            os  << "<?xml version=\"1.0\"?>\n"
+                << "<VTKFile type=\"PolyData\" version=\"0.1\""
+                << " byte_order=\"LittleEndian\">\n<PolyData>\n"
+                << "<Piece NumberOfPoints=\"" << points.size()
+                << "\" NumberOfPolys=\"" << offsets.size() << "\">\n"
+                << "<Points>\n";
+            writeVectors(os, "Points", points);
+            os  << "</Points>\n<Polys>\n";
+            writeScalars(os, "Int32", "connectivity", connectivity);
+            writeScalars(os, "Int32", "offsets", offsets);
+            os  << "</Polys>\n<CellData Scalars=\"id\">\n";
+            writeScalars(os, "Int32", "id", faceIds);
+            writeVectors(os, "velocity", faceU);
+            writeVectors(os, "omega", faceOmega);
+            os  << "</CellData>\n</Piece>\n</PolyData>\n</VTKFile>\n";
+        }
+        commit(file + ".tmp", file);
+    }
+    {
+        labelList verts(centres.size());
+        forAll(verts, i)
+        {
+            verts[i] = i;
+        }
+        labelList vertOffsets(centres.size());
+        forAll(vertOffsets, i)
+        {
+            vertOffsets[i] = i + 1;
+        }
+        const fileName file(dir_/sphereName);
+        {
+            OFstream os(file + ".tmp");
+            os.precision(10);
+            os  << "<?xml version=\"1.0\"?>\n"
+                << "<VTKFile type=\"PolyData\" version=\"0.1\""
+                << " byte_order=\"LittleEndian\">\n<PolyData>\n"
+                << "<Piece NumberOfPoints=\"" << centres.size()
+                << "\" NumberOfVerts=\"" << centres.size() << "\">\n"
+                << "<Points>\n";
+            writeVectors(os, "Points", centres);
+            os  << "</Points>\n<Verts>\n";
+            writeScalars(os, "Int32", "connectivity", verts);
+            writeScalars(os, "Int32", "offsets", vertOffsets);
+            os  << "</Verts>\n<PointData Scalars=\"diameter\">\n";
+            writeScalars(os, "Int32", "id", sphereIds);
+            writeScalars(os, "Float64", "diameter", diameters);
+            writeVectors(os, "velocity", sphereU);
+            writeVectors(os, "omega", sphereOmega);
+            os  << "</PointData>\n</Piece>\n</PolyData>\n</VTKFile>\n";
+        }
+        commit(file + ".tmp", file);
+    }
+
+    polyhedra_.append(Tuple2<word, scalar>(polyName, t));
+    spheres_.append(Tuple2<word, scalar>(sphereName, t));
+    writeSeries(dir_/"polyhedra.vtp.series", polyhedra_);
+    writeSeries(dir_/"spheres.vtp.series", spheres_);
+}
+
+
+// ************************************************************************* //
