@@ -638,6 +638,93 @@ void Foam::narrowPhase::polyhedronContactPoint
 }
 
 
+bool Foam::narrowPhase::polygonPolygon
+(
+    const posedShape& bi,
+    const posedShape& bj,
+    contactGeometry& contact
+)
+{
+    const auto& pi =
+        static_cast<const particleShapes::convexPolyhedron&>(bi.shape);
+    const auto& pj =
+        static_cast<const particleShapes::convexPolyhedron&>(bj.shape);
+
+    // In-plane corners in the world (each corner appears twice, once per
+    // end cap; harmless for projections)
+    const auto corners = [](const posedShape& b, const pointField& pts)
+    {
+        pointField w(pts.size());
+        forAll(pts, k)
+        {
+            w[k] = b.toWorld(pts[k]);
+            w[k].z() = 0;
+        }
+        return w;
+    };
+    const pointField wi(corners(bi, pi.points()));
+    const pointField wj(corners(bj, pj.points()));
+
+    scalar best = GREAT;
+    vector axis(Zero);
+    const auto tryAxes = [&]
+    (
+        const posedShape& b,
+        const particleShapes::convexPolyhedron& poly
+    )
+    {
+        for (const vector& nb : poly.faceNormals())
+        {
+            if (mag(nb.z()) > 0.5)
+            {
+                continue;       // an end cap
+            }
+            vector a = b.R & nb;
+            a.z() = 0;
+            a.normalise();
+            scalar iMin = GREAT, iMax = -GREAT, jMin = GREAT, jMax = -GREAT;
+            for (const point& x : wi)
+            {
+                iMin = min(iMin, x & a);
+                iMax = max(iMax, x & a);
+            }
+            for (const point& x : wj)
+            {
+                jMin = min(jMin, x & a);
+                jMax = max(jMax, x & a);
+            }
+            // Overlap along a, and the way i must go to separate
+            const scalar up = jMax - iMin;      // move i by +a
+            const scalar down = iMax - jMin;    // move i by -a
+            const scalar o = min(up, down);
+            if (o < best)
+            {
+                best = o;
+                axis = up < down ? a : -a;
+            }
+            if (o <= 0)
+            {
+                return false;
+            }
+        }
+        return true;
+    };
+
+    if (!tryAxes(bi, pi) || !tryAxes(bj, pj))
+    {
+        return false;
+    }
+
+    contact.normal = axis;
+    contact.overlap = best;
+    contact.spread = 0;
+    contact.position = 0.5*(bi.centre + bj.centre);
+    polyhedronContactPoint(bi, bj, contact);
+    contact.position.z() = 0.5*(bi.centre.z() + bj.centre.z());
+    return true;
+}
+
+
 bool Foam::narrowPhase::shapeShape
 (
     const posedShape& bi,
@@ -719,6 +806,11 @@ bool Foam::narrowPhase::shapeShape
         }
         contact.normal = -contact.normal;
         return true;
+    }
+
+    if (pi && pj && bi.shape.planar() && bj.shape.planar())
+    {
+        return polygonPolygon(bi, bj, contact);
     }
 
     if (!shapeShapeGJK(bi, bj, contact))

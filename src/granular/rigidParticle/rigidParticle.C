@@ -89,6 +89,8 @@ void Foam::rigidParticle::halfKick(const scalar dt)
     const vector Tbody = T_ & R();
     omegaBody_ +=
         0.5*dt*(invInertia_ & (Tbody - (omegaBody_ ^ (inertia_ & omegaBody_))));
+
+    constrainToPlane();
 }
 
 
