@@ -176,7 +176,7 @@ int main(int argc, char *argv[])
                 << " walls  max overlap " << s.maxOverlapRatio << " D"
                 << "  kinetic energy " << granular.kineticEnergy() << " J"
                 << "  ExecutionTime = " << runTime.elapsedCpuTime() << " s"
-                << nl;
+                << endl;
         }
     }
 

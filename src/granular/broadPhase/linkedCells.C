@@ -90,25 +90,6 @@ Foam::label Foam::linkedCells::index(labelVector ijk) const
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::vector Foam::linkedCells::separation
-(
-    const point& xi,
-    const point& xj
-) const
-{
-    vector d = xi - xj;
-    const vector span = domain_.span();
-    for (direction k = 0; k < 3; ++k)
-    {
-        if (periodic_[k])
-        {
-            d[k] -= span[k]*std::round(d[k]/span[k]);
-        }
-    }
-    return d;
-}
-
-
 void Foam::linkedCells::findPairs
 (
     const UList<point>& x,

@@ -594,10 +594,56 @@ void Foam::narrowPhase::polyhedronContactPoint
     {
         region = clipPolygon(hi, hj);
     }
-    // Else edge on edge: the EPA point is the crossing
 
     if (region.empty())
     {
+        // Edge on edge (or features that do not overlap in the plane, by
+        // round-off): the middle of the closest points of the two features
+        const auto toWorld = [&](const featurePoint& p)
+        {
+            return p.x*e1 + p.y*e2 + p.h*n;
+        };
+        const auto ends = [&](const List<featurePoint>& h, point& a, point& b)
+        {
+            a = toWorld(h.first());
+            b = toWorld(h.size() > 1 ? h[1] : h.first());
+        };
+        point a0, a1, b0, b1;
+        ends(hi, a0, a1);
+        ends(hj, b0, b1);
+        // Closest points of segments [a0, a1] and [b0, b1]
+        const vector d1 = a1 - a0, d2 = b1 - b0, r = a0 - b0;
+        const scalar aa = d1 & d1, ee = d2 & d2, ff = d2 & r;
+        scalar s = 0, t = 0;
+        if (aa > VSMALL && ee > VSMALL)
+        {
+            const scalar c = d1 & r, bb = d1 & d2;
+            const scalar denom = aa*ee - bb*bb;
+            s = denom > VSMALL*aa*ee
+              ? max(scalar(0), min(scalar(1), (bb*ff - c*ee)/denom))
+              : 0;
+            t = (bb*s + ff)/ee;
+            if (t < 0)
+            {
+                t = 0;
+                s = max(scalar(0), min(scalar(1), -c/aa));
+            }
+            else if (t > 1)
+            {
+                t = 1;
+                s = max(scalar(0), min(scalar(1), (bb - c)/aa));
+            }
+        }
+        else if (ee > VSMALL)
+        {
+            t = max(scalar(0), min(scalar(1), ff/ee));
+        }
+        else if (aa > VSMALL)
+        {
+            s = max(scalar(0), min(scalar(1), -(d1 & r)/aa));
+        }
+        contact.position = 0.5*((a0 + s*d1) + (b0 + t*d2));
+        contact.spread = 0;
         return;
     }
 
@@ -725,6 +771,108 @@ bool Foam::narrowPhase::polygonPolygon
 }
 
 
+bool Foam::narrowPhase::polyhedronPolyhedron
+(
+    const posedShape& bi,
+    const posedShape& bj,
+    contactGeometry& contact
+)
+{
+    const auto& pi =
+        static_cast<const particleShapes::convexPolyhedron&>(bi.shape);
+    const auto& pj =
+        static_cast<const particleShapes::convexPolyhedron&>(bj.shape);
+
+    // Vertices relative to the midpoint of the centres, for round-off
+    const point origin = 0.5*(bi.centre + bj.centre);
+    const auto world = [&](const posedShape& b, const pointField& pts)
+    {
+        pointField w(pts.size());
+        const vector c = b.centre - origin;
+        forAll(pts, k)
+        {
+            w[k] = c + (b.R & pts[k]);
+        }
+        return w;
+    };
+    const pointField wi(world(bi, pi.points()));
+    const pointField wj(world(bj, pj.points()));
+
+    scalar best = GREAT;
+    vector normal(Zero);
+
+    // Overlap of the projections on the unit axis a; false if separated
+    const auto test = [&](const vector& a)
+    {
+        scalar iMin = GREAT, iMax = -GREAT, jMin = GREAT, jMax = -GREAT;
+        for (const point& x : wi)
+        {
+            const scalar s = x & a;
+            iMin = min(iMin, s);
+            iMax = max(iMax, s);
+        }
+        for (const point& x : wj)
+        {
+            const scalar s = x & a;
+            jMin = min(jMin, s);
+            jMax = max(jMax, s);
+        }
+        const scalar up = jMax - iMin;      // i leaves along +a
+        const scalar down = iMax - jMin;    // i leaves along -a
+        const scalar o = min(up, down);
+        if (o < best)
+        {
+            best = o;
+            normal = up < down ? a : -a;
+        }
+        return o > 0;
+    };
+
+    // Face normals of both, then the cross products of their edge
+    // directions: the least overlap over all of them is the penetration
+    // depth, exactly (no bias toward face axes: that overestimated the
+    // depth of a resting stack by 20 % and pumped energy into it)
+    for (const vector& n : pi.faceAxes())
+    {
+        if (!test(bi.R & n))
+        {
+            return false;
+        }
+    }
+    for (const vector& n : pj.faceAxes())
+    {
+        if (!test(bj.R & n))
+        {
+            return false;
+        }
+    }
+    for (const vector& ei : pi.edgeDirections())
+    {
+        const vector wei = bi.R & ei;
+        for (const vector& ej : pj.edgeDirections())
+        {
+            const vector a = wei ^ (bj.R & ej);
+            const scalar magA = mag(a);
+            if (magA < 1e-9)
+            {
+                continue;       // parallel edges: a face axis covers them
+            }
+            if (!test(a/magA))
+            {
+                return false;
+            }
+        }
+    }
+
+    contact.normal = normal;
+    contact.overlap = best;
+    contact.spread = 0;
+    contact.position = origin;
+    polyhedronContactPoint(bi, bj, contact);
+    return true;
+}
+
+
 bool Foam::narrowPhase::shapeShape
 (
     const posedShape& bi,
@@ -811,6 +959,10 @@ bool Foam::narrowPhase::shapeShape
     if (pi && pj && bi.shape.planar() && bj.shape.planar())
     {
         return polygonPolygon(bi, bj, contact);
+    }
+    if (pi && pj)
+    {
+        return polyhedronPolyhedron(bi, bj, contact);
     }
 
     if (!shapeShapeGJK(bi, bj, contact))

@@ -85,10 +85,18 @@ void Foam::granularSystem::updateParticleData()
     Fext_.setSize(n, Zero);
     Text_.setSize(n, Zero);
     R_.setSize(n);
+    Upred_.setSize(n, Zero);
+    omegaPred_.setSize(n, Zero);
+    Deq_.setSize(n);
+    sphereRadius_.setSize(n);
 
     scalar rMax = 0, Dmin = GREAT;
     for (label i = 0; i < size(); ++i)
     {
+        const particleShape& shape = particles_[i].shape();
+        Deq_[i] = shape.equivalentDiameter();
+        const auto* s = isA<particleShapes::sphere>(shape);
+        sphereRadius_[i] = s ? s->radius() : -1;
         radius_[i] = particles_[i].shape().boundingRadius();
         rMax = max(rMax, radius_[i]);
         Dmin = min(Dmin, particles_[i].shape().equivalentDiameter());
@@ -270,11 +278,29 @@ void Foam::granularSystem::addContactForces(const scalar dt)
         const point xjImage = pi.position() - d;
         const vector shift = xjImage - pj.position();
 
-        const posedShape bi{pi.shape(), pi.position(), R_[i]};
-        const posedShape bj{pj.shape(), xjImage, R_[j]};
-        if (!narrowPhase::shapeShape(bi, bj, c))
+        if (sphereRadius_[i] > 0 && sphereRadius_[j] > 0)
         {
-            continue;
+            // The common case first, without asking the shapes
+            if
+            (
+                !narrowPhase::sphereSphere
+                (
+                    pi.position(), sphereRadius_[i],
+                    xjImage, sphereRadius_[j], c
+                )
+            )
+            {
+                continue;
+            }
+        }
+        else
+        {
+            const posedShape bi{pi.shape(), pi.position(), R_[i]};
+            const posedShape bj{pj.shape(), xjImage, R_[j]};
+            if (!narrowPhase::shapeShape(bi, bj, c))
+            {
+                continue;
+            }
         }
 
         const scalar M =
@@ -283,8 +309,7 @@ void Foam::granularSystem::addContactForces(const scalar dt)
           : pi.mass()*pj.mass()/(pi.mass() + pj.mass());
 
         const vector Urel =
-            pi.velocityAt(c.position, dt)
-          - pj.velocityAt(c.position - shift, dt);
+            velocityAt(i, c.position) - velocityAt(j, c.position - shift);
 
         const contactLaw& law = laws_->law(materialOf_[i], materialOf_[j]);
         const vector F = contactForce(law, c, Urel, M, dt, pairKey(i, j));
@@ -292,9 +317,9 @@ void Foam::granularSystem::addContactForces(const scalar dt)
         pj.addForceAt(-F, c.position - shift);
         if (c.spread > 0)
         {
-            const vector T = law.twistTorque
+            const vector T = law.regionTorque
             (
-                c.normal, (pi.omega() - pj.omega()) & c.normal,
+                c.normal, omegaPred_[i] - omegaPred_[j],
                 c.spread, M, F & c.normal
             );
             pi.addTorque(T);
@@ -304,13 +329,7 @@ void Foam::granularSystem::addContactForces(const scalar dt)
         ++stats_.nContacts;
         stats_.maxOverlapRatio = max
         (
-            stats_.maxOverlapRatio,
-            c.overlap
-           /min
-            (
-                pi.shape().equivalentDiameter(),
-                pj.shape().equivalentDiameter()
-            )
+            stats_.maxOverlapRatio, c.overlap/min(Deq_[i], Deq_[j])
         );
     }
 
@@ -328,12 +347,29 @@ void Foam::granularSystem::addContactForces(const scalar dt)
             {
                 continue;
             }
-            const posedShape bi{pi.shape(), pi.position(), R_[i]};
-            if (!narrowPhase::shapePlane(bi, wall.origin, wall.normal, c))
+            if (sphereRadius_[i] > 0)
             {
-                continue;
+                if
+                (
+                    !narrowPhase::spherePlane
+                    (
+                        pi.position(), sphereRadius_[i],
+                        wall.origin, wall.normal, c
+                    )
+                )
+                {
+                    continue;
+                }
             }
-            const vector Urel = pi.velocityAt(c.position, dt);
+            else
+            {
+                const posedShape bi{pi.shape(), pi.position(), R_[i]};
+                if (!narrowPhase::shapePlane(bi, wall.origin, wall.normal, c))
+                {
+                    continue;
+                }
+            }
+            const vector Urel = velocityAt(i, c.position);
             const contactLaw& law = laws_->law(materialOf_[i], wallMaterial_[w]);
             const vector F =
                 contactForce(law, c, Urel, pi.mass(), dt, wallKey(i, w));
@@ -342,20 +378,17 @@ void Foam::granularSystem::addContactForces(const scalar dt)
             {
                 pi.addTorque
                 (
-                    law.twistTorque
+                    law.regionTorque
                     (
-                        c.normal, pi.omega() & c.normal, c.spread,
+                        c.normal, omegaPred_[i], c.spread,
                         pi.mass(), F & c.normal
                     )
                 );
             }
 
             ++stats_.nWallContacts;
-            stats_.maxOverlapRatio = max
-            (
-                stats_.maxOverlapRatio,
-                c.overlap/pi.shape().equivalentDiameter()
-            );
+            stats_.maxOverlapRatio =
+                max(stats_.maxOverlapRatio, c.overlap/Deq_[i]);
         }
     }
 
@@ -377,6 +410,7 @@ void Foam::granularSystem::subStep(const scalar dt)
     {
         rigidParticle& p = particles_[i];
         R_[i] = p.R();
+        p.predictedVelocities(dt, Upred_[i], omegaPred_[i]);
         p.clearForces();
         p.addForce(p.mass()*g_ + Fext_[i]);
         p.addTorque(Text_[i]);

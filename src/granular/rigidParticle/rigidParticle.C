@@ -43,6 +43,7 @@ Foam::rigidParticle::rigidParticle
     invInertia_(inv(inertia_)),
     x_(x),
     q_(q),
+    R_(tensor::I),
     U_(Zero),
     omegaBody_(Zero),
     F_(Zero),
@@ -59,6 +60,7 @@ Foam::rigidParticle::rigidParticle
             << " is not allowed; it must be > 0" << exit(FatalError);
     }
     q_.normalize();
+    R_ = q_.R();
 }
 
 
@@ -85,10 +87,15 @@ void Foam::rigidParticle::halfKick(const scalar dt)
 
     U_ += (0.5*dt/mass_)*F_;
 
-    // Euler's equations in the body frame: I dw/dt = T_b - w x (I w)
-    const vector Tbody = T_ & R();
-    omegaBody_ +=
-        0.5*dt*(invInertia_ & (Tbody - (omegaBody_ ^ (inertia_ & omegaBody_))));
+    // In the body frame: I dw/dt = T_b - w x (I w)
+    // Euler's equations, unless nothing turns
+    if (T_ != vector::zero || omegaBody_ != vector::zero)
+    {
+        const vector Tbody = T_ & R_;
+        omegaBody_ +=
+            0.5*dt
+           *(invInertia_ & (Tbody - (omegaBody_ ^ (inertia_ & omegaBody_))));
+    }
 
     constrainToPlane();
 }
@@ -96,32 +103,48 @@ void Foam::rigidParticle::halfKick(const scalar dt)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::vector Foam::rigidParticle::velocityAt(const point& p, const scalar dt) const
+void Foam::rigidParticle::predictedVelocities
+(
+    const scalar dt,
+    vector& U,
+    vector& omegaWorld
+) const
 {
-    const tensor R(this->R());
     if (motion_ != motionKind::free || dt == 0)
     {
-        return U_ + ((R & omegaBody_) ^ (p - x_));
+        U = U_;
+        omegaWorld = R_ & omegaBody_;
+        return;
     }
 
-    // Velocities at the end of the step: the second half kick predicted
-    // with the force and torque the step started with
-    vector U = U_ + (0.5*dt/mass_)*Fstart_;
-    vector omegaB =
-        omegaBody_
-      + 0.5*dt
-       *(
-            invInertia_
-          & ((Tstart_ & R) - (omegaBody_ ^ (inertia_ & omegaBody_)))
-        );
+    // The second half kick predicted with the force and torque the step
+    // started with
+    U = U_ + (0.5*dt/mass_)*Fstart_;
+    vector omegaB = omegaBody_;
+    if (Tstart_ != vector::zero || omegaBody_ != vector::zero)
+    {
+        omegaB +=
+            0.5*dt
+           *(
+                invInertia_
+              & ((Tstart_ & R_) - (omegaBody_ ^ (inertia_ & omegaBody_)))
+            );
+    }
     if (planar_)
     {
         U.z() = 0;
         omegaB.x() = 0;
         omegaB.y() = 0;
     }
+    omegaWorld = R_ & omegaB;
+}
 
-    return U + ((R & omegaB) ^ (p - x_));
+
+Foam::vector Foam::rigidParticle::velocityAt(const point& p, const scalar dt) const
+{
+    vector U, omega;
+    predictedVelocities(dt, U, omega);
+    return U + (omega ^ (p - x_));
 }
 
 
@@ -164,6 +187,7 @@ void Foam::rigidParticle::kickDrift(const scalar dt)
         // Rotation about the body-frame axis: compose on the right
         q_ = q_*quaternion(omegaBody_/magOmega, magOmega*dt);
         q_.normalize();
+        R_ = q_.R();
     }
 }
 

@@ -156,18 +156,38 @@ Foam::scalar Foam::contactLaws::hookeanSpringDashpot::contactTime
 }
 
 
-Foam::vector Foam::contactLaws::hookeanSpringDashpot::twistTorque
+Foam::vector Foam::contactLaws::hookeanSpringDashpot::regionTorque
 (
     const vector& n,
-    const scalar spin,
+    const vector& omegaRel,
     const scalar spread,
     const scalar M,
     const scalar Fn
 ) const
 {
-    const scalar T = -2*gammat(M)*M*sqr(spread)*spin;
-    const scalar cap = muc_*max(Fn, scalar(0))*spread;
-    return (mag(T) > cap ? sign(T)*cap : T)*n;
+    const scalar r2 = sqr(spread);
+    const scalar Fpos = max(Fn, scalar(0));
+
+    // Twist: the tangential dashpot integrated over the region
+    const scalar spin = omegaRel & n;
+    scalar Ttwist = -2*gammat(M)*M*r2*spin;
+    const scalar twistCap = muc_*Fpos*spread;
+    if (mag(Ttwist) > twistCap)
+    {
+        Ttwist = sign(Ttwist)*twistCap;
+    }
+
+    // Rocking: the normal dashpot integrated over the region
+    const vector rock = omegaRel - spin*n;
+    vector Trock = -2*gamman(M)*M*r2*rock;
+    const scalar rockCap = Fpos*spread;
+    const scalar magTrock = mag(Trock);
+    if (magTrock > rockCap)
+    {
+        Trock *= rockCap/magTrock;
+    }
+
+    return Ttwist*n + Trock;
 }
 
 

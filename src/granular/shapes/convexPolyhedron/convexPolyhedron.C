@@ -97,6 +97,50 @@ void Foam::particleShapes::convexPolyhedron::build
         faceNormals_[facei] = faces_[facei].unitNormal(points_);
         faceOffsets_[facei] = faceNormals_[facei] & points_[faces_[facei][0]];
     }
+
+    // Distinct edge directions (parallel edges once), for separating axes
+    DynamicList<vector> dirs;
+    for (const face& f : faces_)
+    {
+        forAll(f, k)
+        {
+            const vector e = normalised(points_[f.nextLabel(k)] - points_[f[k]]);
+            bool found = false;
+            for (const vector& d : dirs)
+            {
+                if (mag(e ^ d) < 1e-9)
+                {
+                    found = true;
+                    break;
+                }
+            }
+            if (!found)
+            {
+                dirs.append(e);
+            }
+        }
+    }
+    edgeDirections_.transfer(dirs);
+
+    // Distinct face normals up to sign (a cube's opposite faces once)
+    DynamicList<vector> axes;
+    for (const vector& n : faceNormals_)
+    {
+        bool found = false;
+        for (const vector& a : axes)
+        {
+            if (mag(n ^ a) < 1e-9)
+            {
+                found = true;
+                break;
+            }
+        }
+        if (!found)
+        {
+            axes.append(n);
+        }
+    }
+    faceAxes_.transfer(axes);
 }
 
 
