@@ -22,6 +22,7 @@ Description
 #include "granularSystem.H"
 #include "IStringStream.H"
 #include "OSspecific.H"
+#include "OFstream.H"
 #include "mathematicalConstants.H"
 
 #include <gtest/gtest.h>
@@ -448,6 +449,52 @@ TEST(granularSystem, contactAcrossPeriodicBoundaryMatchesInterior)
     EXPECT_GT(mag(U0 - vector(0.3, 0, 0.01)), 1e-3) << "no collision";
     EXPECT_LT(mag(U1 - U0), 1e-12);
     EXPECT_LT(mag(W1 - W0), 1e-9);
+}
+
+
+TEST(granularSystem, malformedParticleFileIsReportedWithItsLine)
+{
+    auto sys = makeSystem
+    (
+        "ball { type sphere; D 0.01; }", "en 0.7; muc 0.3; kn 1e3;", "", bigBox
+    );
+    const auto readText = [&](const std::string& body) -> std::string
+    {
+        const fileName file("granularBadParticles");
+        {
+            OFstream os(file);
+            os << "particles\n(\n" << body.c_str() << "\n);\n";
+        }
+        std::string message;
+        try
+        {
+            sys->readParticles(file);
+        }
+        catch (const Foam::error& err)
+        {
+            message = err.message();
+        }
+        rm(file);
+        return message;
+    };
+
+    // Line 4: the orientation is not a list
+    std::string m = readText("(0 ball glass free (0 0 0) (1 0 0 0))\n(1 ball glass free (0.1 0 0) oops)");
+    std::cout << m << nl;
+    EXPECT_NE(m.find("line 4"), std::string::npos) << m;
+
+    // An unknown shape names the particle and the valid shapes
+    m = readText("(7 bal glass free (0 0 0) (1 0 0 0))");
+    EXPECT_NE(m.find("particle 7"), std::string::npos) << m;
+    EXPECT_NE(m.find("ball"), std::string::npos) << m;
+
+    // A repeated id, a zero quaternion, an unknown motion
+    m = readText("(1 ball glass free (0 0 0) (1 0 0 0))\n(1 ball glass free (0.1 0 0) (1 0 0 0))");
+    EXPECT_NE(m.find("given twice"), std::string::npos) << m;
+    m = readText("(2 ball glass free (0 0 0) (0 0 0 0))");
+    EXPECT_NE(m.find("not a rotation"), std::string::npos) << m;
+    m = readText("(3 ball glass frozen (0 0 0) (1 0 0 0))");
+    EXPECT_NE(m.find("prescribed"), std::string::npos) << m;
 }
 
 
