@@ -157,7 +157,7 @@ int main(int argc, char *argv[])
         nSubTotal += nSub;
 
         const granularSystem::statistics& s = granular.stats();
-        dat << runTime.value() << ' ' << granular.kineticEnergy() << ' '
+        dat << runTime.value() << ' ' << s.kineticEnergy << ' '
             << nSub << ' ' << s.nContacts << ' ' << s.nWallContacts << ' '
             << s.maxOverlapRatio << ' ' << s.nListBuilds << ' '
             << runTime.elapsedCpuTime() << nl;
@@ -174,7 +174,7 @@ int main(int argc, char *argv[])
                 << "  sub-steps " << nSub
                 << "  contacts " << s.nContacts << " + " << s.nWallContacts
                 << " walls  max overlap " << s.maxOverlapRatio << " D"
-                << "  kinetic energy " << granular.kineticEnergy() << " J"
+                << "  kinetic energy " << s.kineticEnergy << " J"
                 << "  ExecutionTime = " << runTime.elapsedCpuTime() << " s"
                 << endl;
         }

@@ -156,8 +156,10 @@ void Foam::granularSystem::updateParticleData()
 }
 
 
-void Foam::granularSystem::wrapPeriodic()
+void Foam::granularSystem::wrapPeriodic(rigidParticle& p) const
 {
+    point x = p.position();
+    bool moved = false;
     for (direction d = 0; d < 3; ++d)
     {
         if (!periodic_[d])
@@ -166,15 +168,15 @@ void Foam::granularSystem::wrapPeriodic()
         }
         const scalar lo = domain_.min()[d];
         const scalar L = domain_.span()[d];
-        for (rigidParticle& p : particles_)
+        if (x[d] < lo || x[d] >= lo + L)
         {
-            point x = p.position();
-            if (x[d] < lo || x[d] >= lo + L)
-            {
-                x[d] -= L*std::floor((x[d] - lo)/L);
-                p.setPosition(x);
-            }
+            x[d] -= L*std::floor((x[d] - lo)/L);
+            moved = true;
         }
+    }
+    if (moved)
+    {
+        p.setPosition(x);
     }
 }
 
@@ -248,7 +250,68 @@ Foam::vector Foam::granularSystem::contactForce
 }
 
 
-void Foam::granularSystem::addContactForces(const scalar dt)
+void Foam::granularSystem::addWallForces(const label i, const scalar dt)
+{
+    rigidParticle& pi = particles_[i];
+    if (pi.motion() != rigidParticle::motionKind::free)
+    {
+        return;
+    }
+    contactGeometry c;
+    forAll(walls_, w)
+    {
+        const planeWall& wall = walls_[w];
+        if (wall.distance(pi.position()) > radius_[i])
+        {
+            continue;
+        }
+        if (sphereRadius_[i] > 0)
+        {
+            if
+            (
+                !narrowPhase::spherePlane
+                (
+                    pi.position(), sphereRadius_[i],
+                    wall.origin, wall.normal, c
+                )
+            )
+            {
+                continue;
+            }
+        }
+        else
+        {
+            const posedShape bi{pi.shape(), pi.position(), R_[i]};
+            if (!narrowPhase::shapePlane(bi, wall.origin, wall.normal, c))
+            {
+                continue;
+            }
+        }
+        const vector Urel = velocityAt(i, c.position);
+        const contactLaw& law = laws_->law(materialOf_[i], wallMaterial_[w]);
+        const vector F =
+            contactForce(law, c, Urel, pi.mass(), dt, wallKey(i, w));
+        pi.addForceAt(F, c.position);
+        if (c.spread > 0)
+        {
+            pi.addTorque
+            (
+                law.regionTorque
+                (
+                    c.normal, omegaPred_[i], c.spread,
+                    pi.mass(), F & c.normal
+                )
+            );
+        }
+
+        ++stats_.nWallContacts;
+        stats_.maxOverlapRatio =
+            max(stats_.maxOverlapRatio, c.overlap/Deq_[i]);
+    }
+}
+
+
+void Foam::granularSystem::addPairForces(const scalar dt)
 {
     using motionKind = rigidParticle::motionKind;
 
@@ -333,65 +396,6 @@ void Foam::granularSystem::addContactForces(const scalar dt)
         );
     }
 
-    for (label i = 0; i < size(); ++i)
-    {
-        rigidParticle& pi = particles_[i];
-        if (pi.motion() != motionKind::free)
-        {
-            continue;
-        }
-        forAll(walls_, w)
-        {
-            const planeWall& wall = walls_[w];
-            if (wall.distance(pi.position()) > radius_[i])
-            {
-                continue;
-            }
-            if (sphereRadius_[i] > 0)
-            {
-                if
-                (
-                    !narrowPhase::spherePlane
-                    (
-                        pi.position(), sphereRadius_[i],
-                        wall.origin, wall.normal, c
-                    )
-                )
-                {
-                    continue;
-                }
-            }
-            else
-            {
-                const posedShape bi{pi.shape(), pi.position(), R_[i]};
-                if (!narrowPhase::shapePlane(bi, wall.origin, wall.normal, c))
-                {
-                    continue;
-                }
-            }
-            const vector Urel = velocityAt(i, c.position);
-            const contactLaw& law = laws_->law(materialOf_[i], wallMaterial_[w]);
-            const vector F =
-                contactForce(law, c, Urel, pi.mass(), dt, wallKey(i, w));
-            pi.addForceAt(F, c.position);
-            if (c.spread > 0)
-            {
-                pi.addTorque
-                (
-                    law.regionTorque
-                    (
-                        c.normal, omegaPred_[i], c.spread,
-                        pi.mass(), F & c.normal
-                    )
-                );
-            }
-
-            ++stats_.nWallContacts;
-            stats_.maxOverlapRatio =
-                max(stats_.maxOverlapRatio, c.overlap/Deq_[i]);
-        }
-    }
-
     // Contacts that ended lose their history
     history_.swap(historyNew_);
     historyNew_.clear();
@@ -400,31 +404,39 @@ void Foam::granularSystem::addContactForces(const scalar dt)
 
 void Foam::granularSystem::subStep(const scalar dt)
 {
-    for (rigidParticle& p : particles_)
-    {
-        p.kickDrift(dt);
-    }
-    wrapPeriodic();
-
+    // Three passes over the particles, each record read once per pass:
+    // (1) first half kick and drift, start of the force sum, wall
+    // contacts (they involve one particle); (2) pair contacts; (3) second
+    // half kick and the kinetic energy
+    const bool walls = contactsOn_ && walls_.size();
     for (label i = 0; i < size(); ++i)
     {
         rigidParticle& p = particles_[i];
+        p.kickDrift(dt);
+        wrapPeriodic(p);
         R_[i] = p.R();
         p.predictedVelocities(dt, Upred_[i], omegaPred_[i]);
         p.clearForces();
         p.addForce(p.mass()*g_ + Fext_[i]);
         p.addTorque(Text_[i]);
+        if (walls)
+        {
+            addWallForces(i, dt);
+        }
     }
 
     if (contactsOn_)
     {
-        addContactForces(dt);
+        addPairForces(dt);
     }
 
+    scalar E = 0;
     for (rigidParticle& p : particles_)
     {
         p.kick(dt);
+        E += p.kineticEnergy();
     }
+    stats_.kineticEnergy = E;
 }
 
 
