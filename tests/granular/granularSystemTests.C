@@ -122,7 +122,7 @@ TEST(granularSystem, headOnCollisionRecoversRestitutionAndDuration)
     // T_c/40 for 0.5 % (-1.0 % at T_c/20, measured).
     for (const scalar en : {0.75, 0.9, 1.0})
     {
-        scalar eErr, TcErr;
+        scalar eErr = GREAT, TcErr = GREAT;
         headOn(en, 20, eErr, TcErr);
         std::cout << "en " << en << " at Tc/20: e error " << eErr
             << ", Tc error " << TcErr << nl;
@@ -130,7 +130,7 @@ TEST(granularSystem, headOnCollisionRecoversRestitutionAndDuration)
         EXPECT_LT(mag(TcErr), 0.01) << "en " << en;
     }
     {
-        scalar e20, T20, e40, T40;
+        scalar e20 = GREAT, T20 = GREAT, e40 = GREAT, T40 = GREAT;
         headOn(0.5, 20, e20, T20);
         headOn(0.5, 40, e40, T40);
         std::cout << "en 0.5: e error " << e20 << " at Tc/20, " << e40

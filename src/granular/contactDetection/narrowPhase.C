@@ -316,7 +316,7 @@ bool Foam::narrowPhase::spherePolyhedron
         return false;
     }
 
-    point closest;
+    point closest(Zero);
     vector nBody;
     scalar overlap;
 
