@@ -239,6 +239,7 @@ bool Foam::narrowPhase::sphereSphere
     contact.normal = dist > VSMALL ? d/dist : vector(1, 0, 0);
     contact.overlap = overlap;
     contact.spread = 0;
+    contact.nPoints = 0;
     // Midway through the overlap lens
     contact.position = cj + (rj - 0.5*overlap)*contact.normal;
     return true;
@@ -264,6 +265,7 @@ bool Foam::narrowPhase::spherePlane
     contact.overlap = overlap;
     contact.position = c - (r - 0.5*overlap)*n;
     contact.spread = 0;
+    contact.nPoints = 0;
     return true;
 }
 
@@ -392,6 +394,7 @@ bool Foam::narrowPhase::spherePolyhedron
     contact.normal = poly.R & nBody;
     contact.overlap = overlap;
     contact.spread = 0;
+    contact.nPoints = 0;
     // Midway between the polyhedron's surface and the sphere's deepest point
     contact.position = poly.toWorld(closest) - 0.5*overlap*contact.normal;
     return true;
@@ -427,6 +430,7 @@ bool Foam::narrowPhase::shapePlane
     contact.normal = n;
     contact.overlap = overlap;
     contact.spread = 0;
+    contact.nPoints = 0;
 
     const auto* poly =
         dynamic_cast<const particleShapes::convexPolyhedron*>(&body.shape);
@@ -544,6 +548,7 @@ bool Foam::narrowPhase::shapeShapeGJK
     contact.normal = -normalised(vector(dir.v[0], dir.v[1], dir.v[2]));
     contact.overlap = depth;
     contact.spread = 0;
+    contact.nPoints = 0;
     contact.position = point(pos.v[0], pos.v[1], pos.v[2]);
     return true;
 }
@@ -644,6 +649,7 @@ void Foam::narrowPhase::polyhedronContactPoint
         }
         contact.position = 0.5*((a0 + s*d1) + (b0 + t*d2));
         contact.spread = 0;
+    contact.nPoints = 0;
         return;
     }
 
@@ -652,12 +658,20 @@ void Foam::narrowPhase::polyhedronContactPoint
     const heightFit Hi(fi), Hj(fj);
     scalar sumW = 0;
     scalar x = 0, y = 0;
+    contact.nPoints = 0;
     for (const featurePoint& p : region)
     {
         const scalar w = max(Hj(p.x, p.y) - Hi(p.x, p.y), scalar(0));
         sumW += w;
         x += w*p.x;
         y += w*p.y;
+        if (w > 0 && contact.nPoints < contactGeometry::maxPoints)
+        {
+            contact.points[contact.nPoints] =
+                p.x*e1 + p.y*e2 + 0.5*(Hi(p.x, p.y) + Hj(p.x, p.y))*n;
+            contact.depths[contact.nPoints] = w;
+            ++contact.nPoints;
+        }
     }
     if (!(sumW > 0))
     {
@@ -764,6 +778,7 @@ bool Foam::narrowPhase::polygonPolygon
     contact.normal = axis;
     contact.overlap = best;
     contact.spread = 0;
+    contact.nPoints = 0;
     contact.position = 0.5*(bi.centre + bj.centre);
     polyhedronContactPoint(bi, bj, contact);
     contact.position.z() = 0.5*(bi.centre.z() + bj.centre.z());
@@ -867,6 +882,7 @@ bool Foam::narrowPhase::polyhedronPolyhedron
     contact.normal = normal;
     contact.overlap = best;
     contact.spread = 0;
+    contact.nPoints = 0;
     contact.position = origin;
     polyhedronContactPoint(bi, bj, contact);
     return true;

@@ -375,6 +375,38 @@ void Foam::granularSystem::addPairForces(const scalar dt)
             velocityAt(i, c.position) - velocityAt(j, c.position - shift);
 
         const contactLaw& law = laws_->law(materialOf_[i], materialOf_[j]);
+        if (c.nPoints > 1 && !law.needsHistory())
+        {
+            // A face or edge in contact: the law at each overlapping corner
+            // of the contact region, at its own overlap and velocity,
+            // weighted by its share of the summed overlap. Equal overlaps,
+            // or a single corner, give the law itself; a corner lifting
+            // off fades out continuously; the corners' dashpots damp
+            // rocking and twist.
+            scalar sumDepth = 0;
+            for (label k = 0; k < c.nPoints; ++k)
+            {
+                sumDepth += c.depths[k];
+            }
+            vector unused(Zero);
+            for (label k = 0; k < c.nPoints; ++k)
+            {
+                const point& pk = c.points[k];
+                const vector Uk =
+                    velocityAt(i, pk) - velocityAt(j, pk - shift);
+                const vector Fk =
+                    (c.depths[k]/sumDepth)
+                   *law.force(c.depths[k], c.normal, Uk, M, dt, unused);
+                pi.addForceAt(Fk, pk);
+                pj.addForceAt(-Fk, pk - shift);
+            }
+            ++stats_.nContacts;
+            stats_.maxOverlapRatio = max
+            (
+                stats_.maxOverlapRatio, c.overlap/min(Deq_[i], Deq_[j])
+            );
+            continue;
+        }
         const vector F = contactForce(law, c, Urel, M, dt, pairKey(i, j));
         pi.addForceAt(F, c.position);
         pj.addForceAt(-F, c.position - shift);
