@@ -32,7 +32,9 @@ Usage
 
     Reads:
     - constant/particleProperties (shapes, materials)
-    - constant/collisionProperties (law, pairs, walls, domain)
+    - constant/collisionProperties (law, pairs, walls, domain; and
+      wallPatches { patches (floor sides); material steel; } to take plane
+      walls from the planar patches of constant/polyMesh)
     - constant/g (optional; no gravity without it)
     - <startTime>/particles
 
@@ -46,6 +48,7 @@ Usage
 #include "clockTime.H"
 #include "granularSystem.H"
 #include "granularVTKWriter.H"
+#include "polyMesh.H"
 
 using namespace Foam;
 
@@ -87,6 +90,31 @@ int main(int argc, char *argv[])
 
     granularSystem granular(particleProperties, collisionProperties);
 
+    // Walls from the planar patches of a mesh, where asked for
+    if (const dictionary* wp = collisionProperties.findDict("wallPatches"))
+    {
+        Info<< "Reading the mesh for its wall patches" << nl;
+        const polyMesh mesh
+        (
+            IOobject
+            (
+                polyMesh::defaultRegion,
+                runTime.timeName(),
+                runTime,
+                IOobject::MUST_READ
+            )
+        );
+        granular.addWalls
+        (
+            planeWall::fromPatches
+            (
+                mesh,
+                wp->get<wordRes>("patches"),
+                wp->get<word>("material")
+            )
+        );
+    }
+
     IOobject gHeader
     (
         "g",
@@ -119,8 +147,13 @@ int main(int argc, char *argv[])
         Info<< ' ' << s.name() << " (" << s.type() << ", D = "
             << s.equivalentDiameter() << " m)";
     }
-    Info<< nl << "Walls: " << granular.walls().size()
-        << "; periodic " << granular.periodic() << nl
+    Info<< nl << "Walls: " << granular.walls().size() << nl;
+    for (const planeWall& w : granular.walls())
+    {
+        Info<< "    wall " << w.name << ": point " << w.origin << " normal "
+            << w.normal << " material " << w.material << nl;
+    }
+    Info<< "Periodic " << granular.periodic() << nl
         << "Granular sub-step T_c/N = " << granular.maxSubStep() << " s,"
         << " skin " << granular.skin() << " m" << nl << endl;
 
