@@ -87,9 +87,7 @@ void headOn(const scalar en, const label N, scalar& eErr, scalar& TcErr)
     sys->particle(0).setVelocity(vector(-0.5*v0, 0, 0));
     sys->particle(1).setVelocity(vector(0.5*v0, 0, 0));
 
-    const scalar m = sys->particle(0).mass();
     const scalar Tc = dt*N;
-    (void)m;
     scalar t = 0, tStart = -1, tEnd = -1;
     auto gap = [&]()
     {

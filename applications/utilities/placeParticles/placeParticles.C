@@ -28,8 +28,10 @@ Description
     image). The count is given, or follows from a target solid fraction of
     the region. When maxAttempts poses in a row are all rejected the
     utility stops, says how many it placed and the solid fraction reached.
-    Random sequential addition of spheres jams near phi = 0.38: higher
-    targets need a packing run (pour them with granularFoam).
+    Random sequential addition jams well below the packings a pour
+    reaches (5 mm cubes in pouringCubes: 1837 placed, phi = 0.164, before
+    200 rejections in a row): higher targets need a packing run (pour them
+    with granularFoam).
 
 Usage
     \b placeParticles [OPTIONS]
@@ -122,27 +124,8 @@ int main(int argc, char *argv[])
 
     const word shapeName(dict.get<word>("shape"));
     const word materialName(dict.get<word>("material"));
-    const particleShape* shapePtr = nullptr;
-    for (const particleShape& s : granular.shapes())
-    {
-        if (s.name() == shapeName)
-        {
-            shapePtr = &s;
-        }
-    }
-    if (!shapePtr)
-    {
-        wordList names;
-        for (const particleShape& s : granular.shapes())
-        {
-            names.append(s.name());
-        }
-        FatalIOErrorInFunction(dict)
-            << "shape " << shapeName << " is not one of the shapes of "
-            << particleProperties.name() << ": " << names
-            << exit(FatalIOError);
-    }
-    const particleShape& shape = *shapePtr;
+    const particleShape& shape =
+        granular.shape(shapeName, "placeParticlesDict");
     granular.materials().particleMaterial
     (
         materialName, "placeParticlesDict", dict

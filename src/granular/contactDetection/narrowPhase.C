@@ -209,6 +209,51 @@ namespace
         return List<featurePoint>(std::move(f));
     }
 
+
+    //- The separating-axis test of two convex point sets: the least
+    //- overlap of their projections over the axes tried, and the axis
+    //- (pointing from j to i) that gives it
+    struct separatingAxes
+    {
+        const UList<point>& wi;
+        const UList<point>& wj;
+        scalar best = GREAT;
+        vector normal = Zero;
+
+        separatingAxes(const UList<point>& pi, const UList<point>& pj)
+        :
+            wi(pi),
+            wj(pj)
+        {}
+
+        //- Try the unit axis a; false if it separates the sets
+        bool test(const vector& a)
+        {
+            scalar iMin = GREAT, iMax = -GREAT, jMin = GREAT, jMax = -GREAT;
+            for (const point& x : wi)
+            {
+                const scalar s = x & a;
+                iMin = min(iMin, s);
+                iMax = max(iMax, s);
+            }
+            for (const point& x : wj)
+            {
+                const scalar s = x & a;
+                jMin = min(jMin, s);
+                jMax = max(jMax, s);
+            }
+            const scalar up = jMax - iMin;      // i leaves along +a
+            const scalar down = iMax - jMin;    // i leaves along -a
+            const scalar o = min(up, down);
+            if (o < best)
+            {
+                best = o;
+                normal = up < down ? a : -a;
+            }
+            return o > 0;
+        }
+    };
+
     const particleShapes::sphere* asSphere(const particleShape& shape)
     {
         return dynamic_cast<const particleShapes::sphere*>(&shape);
@@ -236,12 +281,9 @@ bool Foam::narrowPhase::sphereSphere
     }
 
     // Concentric spheres have no normal: any direction will do
-    contact.normal = dist > VSMALL ? d/dist : vector(1, 0, 0);
-    contact.overlap = overlap;
-    contact.spread = 0;
-    contact.nPoints = 0;
+    const vector n = dist > VSMALL ? d/dist : vector(1, 0, 0);
     // Midway through the overlap lens
-    contact.position = cj + (rj - 0.5*overlap)*contact.normal;
+    contact.set(cj + (rj - 0.5*overlap)*n, n, overlap);
     return true;
 }
 
@@ -261,11 +303,7 @@ bool Foam::narrowPhase::spherePlane
         return false;
     }
 
-    contact.normal = n;
-    contact.overlap = overlap;
-    contact.position = c - (r - 0.5*overlap)*n;
-    contact.spread = 0;
-    contact.nPoints = 0;
+    contact.set(c - (r - 0.5*overlap)*n, n, overlap);
     return true;
 }
 
@@ -391,12 +429,9 @@ bool Foam::narrowPhase::spherePolyhedron
         nBody = (cb - closest)/dist;
     }
 
-    contact.normal = poly.R & nBody;
-    contact.overlap = overlap;
-    contact.spread = 0;
-    contact.nPoints = 0;
     // Midway between the polyhedron's surface and the sphere's deepest point
-    contact.position = poly.toWorld(closest) - 0.5*overlap*contact.normal;
+    const vector n = poly.R & nBody;
+    contact.set(poly.toWorld(closest) - 0.5*overlap*n, n, overlap);
     return true;
 }
 
@@ -427,16 +462,12 @@ bool Foam::narrowPhase::shapePlane
         return false;
     }
 
-    contact.normal = n;
-    contact.overlap = overlap;
-    contact.spread = 0;
-    contact.nPoints = 0;
+    contact.set(deepest + 0.5*overlap*n, n, overlap);
 
     const auto* poly =
         dynamic_cast<const particleShapes::convexPolyhedron*>(&body.shape);
     if (!poly)
     {
-        contact.position = deepest + 0.5*overlap*n;
         return true;
     }
 
@@ -545,11 +576,12 @@ bool Foam::narrowPhase::shapeShapeGJK
 
     // libccd moves obj2 (j) along dir to separate: the normal from j to i
     // is -dir
-    contact.normal = -normalised(vector(dir.v[0], dir.v[1], dir.v[2]));
-    contact.overlap = depth;
-    contact.spread = 0;
-    contact.nPoints = 0;
-    contact.position = point(pos.v[0], pos.v[1], pos.v[2]);
+    contact.set
+    (
+        point(pos.v[0], pos.v[1], pos.v[2]),
+        -normalised(vector(dir.v[0], dir.v[1], dir.v[2])),
+        depth
+    );
     return true;
 }
 
@@ -649,7 +681,7 @@ void Foam::narrowPhase::polyhedronContactPoint
         }
         contact.position = 0.5*((a0 + s*d1) + (b0 + t*d2));
         contact.spread = 0;
-    contact.nPoints = 0;
+        contact.nPoints = 0;
         return;
     }
 
@@ -724,10 +756,10 @@ bool Foam::narrowPhase::polygonPolygon
     };
     const pointField wi(corners(bi, pi.points()));
     const pointField wj(corners(bj, pj.points()));
+    separatingAxes sat(wi, wj);
 
-    scalar best = GREAT;
-    vector axis(Zero);
-    const auto tryAxes = [&]
+    // The side normals of both polygons, in the plane
+    const auto sides = [&]
     (
         const posedShape& b,
         const particleShapes::convexPolyhedron& poly
@@ -741,45 +773,19 @@ bool Foam::narrowPhase::polygonPolygon
             }
             vector a = b.R & nb;
             a.z() = 0;
-            a.normalise();
-            scalar iMin = GREAT, iMax = -GREAT, jMin = GREAT, jMax = -GREAT;
-            for (const point& x : wi)
-            {
-                iMin = min(iMin, x & a);
-                iMax = max(iMax, x & a);
-            }
-            for (const point& x : wj)
-            {
-                jMin = min(jMin, x & a);
-                jMax = max(jMax, x & a);
-            }
-            // Overlap along a, and the way i must go to separate
-            const scalar up = jMax - iMin;      // move i by +a
-            const scalar down = iMax - jMin;    // move i by -a
-            const scalar o = min(up, down);
-            if (o < best)
-            {
-                best = o;
-                axis = up < down ? a : -a;
-            }
-            if (o <= 0)
+            if (!sat.test(normalised(a)))
             {
                 return false;
             }
         }
         return true;
     };
-
-    if (!tryAxes(bi, pi) || !tryAxes(bj, pj))
+    if (!sides(bi, pi) || !sides(bj, pj))
     {
         return false;
     }
 
-    contact.normal = axis;
-    contact.overlap = best;
-    contact.spread = 0;
-    contact.nPoints = 0;
-    contact.position = 0.5*(bi.centre + bj.centre);
+    contact.set(0.5*(bi.centre + bj.centre), sat.normal, sat.best);
     polyhedronContactPoint(bi, bj, contact);
     contact.position.z() = 0.5*(bi.centre.z() + bj.centre.z());
     return true;
@@ -812,36 +818,7 @@ bool Foam::narrowPhase::polyhedronPolyhedron
     };
     const pointField wi(world(bi, pi.points()));
     const pointField wj(world(bj, pj.points()));
-
-    scalar best = GREAT;
-    vector normal(Zero);
-
-    // Overlap of the projections on the unit axis a; false if separated
-    const auto test = [&](const vector& a)
-    {
-        scalar iMin = GREAT, iMax = -GREAT, jMin = GREAT, jMax = -GREAT;
-        for (const point& x : wi)
-        {
-            const scalar s = x & a;
-            iMin = min(iMin, s);
-            iMax = max(iMax, s);
-        }
-        for (const point& x : wj)
-        {
-            const scalar s = x & a;
-            jMin = min(jMin, s);
-            jMax = max(jMax, s);
-        }
-        const scalar up = jMax - iMin;      // i leaves along +a
-        const scalar down = iMax - jMin;    // i leaves along -a
-        const scalar o = min(up, down);
-        if (o < best)
-        {
-            best = o;
-            normal = up < down ? a : -a;
-        }
-        return o > 0;
-    };
+    separatingAxes sat(wi, wj);
 
     // Face normals of both, then the cross products of their edge
     // directions: the least overlap over all of them is the penetration
@@ -849,14 +826,14 @@ bool Foam::narrowPhase::polyhedronPolyhedron
     // depth of a resting stack by 20 % and pumped energy into it)
     for (const vector& n : pi.faceAxes())
     {
-        if (!test(bi.R & n))
+        if (!sat.test(bi.R & n))
         {
             return false;
         }
     }
     for (const vector& n : pj.faceAxes())
     {
-        if (!test(bj.R & n))
+        if (!sat.test(bj.R & n))
         {
             return false;
         }
@@ -872,18 +849,14 @@ bool Foam::narrowPhase::polyhedronPolyhedron
             {
                 continue;       // parallel edges: a face axis covers them
             }
-            if (!test(a/magA))
+            if (!sat.test(a/magA))
             {
                 return false;
             }
         }
     }
 
-    contact.normal = normal;
-    contact.overlap = best;
-    contact.spread = 0;
-    contact.nPoints = 0;
-    contact.position = origin;
+    contact.set(origin, sat.normal, sat.best);
     polyhedronContactPoint(bi, bj, contact);
     return true;
 }
@@ -981,21 +954,7 @@ bool Foam::narrowPhase::shapeShape
         return polyhedronPolyhedron(bi, bj, contact);
     }
 
-    if (!shapeShapeGJK(bi, bj, contact))
-    {
-        return false;
-    }
-    if (bi.shape.planar() && bj.shape.planar())
-    {
-        // Two prisms of a 2D case touch along their sides
-        contact.normal.z() = 0;
-        contact.normal.normalise();
-    }
-    if (pi && pj)
-    {
-        polyhedronContactPoint(bi, bj, contact);
-    }
-    return true;
+    return shapeShapeGJK(bi, bj, contact);
 }
 
 

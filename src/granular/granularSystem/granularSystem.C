@@ -84,7 +84,6 @@ void Foam::granularSystem::updateParticleData()
     radius_.setSize(n);
     Fext_.setSize(n, Zero);
     Text_.setSize(n, Zero);
-    R_.setSize(n);
     Upred_.setSize(n, Zero);
     omegaPred_.setSize(n, Zero);
     Deq_.setSize(n);
@@ -100,7 +99,6 @@ void Foam::granularSystem::updateParticleData()
         radius_[i] = particles_[i].shape().boundingRadius();
         rMax = max(rMax, radius_[i]);
         Dmin = min(Dmin, particles_[i].shape().equivalentDiameter());
-        R_[i] = particles_[i].R();
     }
     if (skin_ < 0 && n)
     {
@@ -281,7 +279,7 @@ void Foam::granularSystem::addWallForces(const label i, const scalar dt)
         }
         else
         {
-            const posedShape bi{pi.shape(), pi.position(), R_[i]};
+            const posedShape bi{pi.shape(), pi.position(), pi.R()};
             if (!narrowPhase::shapePlane(bi, wall.origin, wall.normal, c))
             {
                 continue;
@@ -358,8 +356,8 @@ void Foam::granularSystem::addPairForces(const scalar dt)
         }
         else
         {
-            const posedShape bi{pi.shape(), pi.position(), R_[i]};
-            const posedShape bj{pj.shape(), xjImage, R_[j]};
+            const posedShape bi{pi.shape(), pi.position(), pi.R()};
+            const posedShape bj{pj.shape(), xjImage, pj.R()};
             if (!narrowPhase::shapeShape(bi, bj, c))
             {
                 continue;
@@ -370,9 +368,6 @@ void Foam::granularSystem::addPairForces(const scalar dt)
             !iMoves ? pj.mass()
           : !jMoves ? pi.mass()
           : pi.mass()*pj.mass()/(pi.mass() + pj.mass());
-
-        const vector Urel =
-            velocityAt(i, c.position) - velocityAt(j, c.position - shift);
 
         const contactLaw& law = laws_->law(materialOf_[i], materialOf_[j]);
         if (c.nPoints > 1 && !law.needsHistory())
@@ -407,6 +402,8 @@ void Foam::granularSystem::addPairForces(const scalar dt)
             );
             continue;
         }
+        const vector Urel =
+            velocityAt(i, c.position) - velocityAt(j, c.position - shift);
         const vector F = contactForce(law, c, Urel, M, dt, pairKey(i, j));
         pi.addForceAt(F, c.position);
         pj.addForceAt(-F, c.position - shift);
@@ -434,19 +431,18 @@ void Foam::granularSystem::addPairForces(const scalar dt)
 }
 
 
-void Foam::granularSystem::subStep(const scalar dt)
+void Foam::granularSystem::subStep(const scalar dt, const bool last)
 {
     // Three passes over the particles, each record read once per pass:
     // (1) first half kick and drift, start of the force sum, wall
     // contacts (they involve one particle); (2) pair contacts; (3) second
-    // half kick and the kinetic energy
+    // half kick, and on the last sub-step of evolve the kinetic energy
     const bool walls = contactsOn_ && walls_.size();
     for (label i = 0; i < size(); ++i)
     {
         rigidParticle& p = particles_[i];
         p.kickDrift(dt);
         wrapPeriodic(p);
-        R_[i] = p.R();
         p.predictedVelocities(dt, Upred_[i], omegaPred_[i]);
         p.clearForces();
         p.addForce(p.mass()*g_ + Fext_[i]);
@@ -462,6 +458,14 @@ void Foam::granularSystem::subStep(const scalar dt)
         addPairForces(dt);
     }
 
+    if (!last)
+    {
+        for (rigidParticle& p : particles_)
+        {
+            p.kick(dt);
+        }
+        return;
+    }
     scalar E = 0;
     for (rigidParticle& p : particles_)
     {
@@ -533,6 +537,34 @@ void Foam::granularSystem::addWalls(const UList<planeWall>& walls)
 }
 
 
+Foam::label Foam::granularSystem::shapeIndex
+(
+    const word& name,
+    const string& owner
+) const
+{
+    const label shapei = shapeIndex_.lookup(name, -1);
+    if (shapei < 0)
+    {
+        FatalErrorInFunction
+            << owner.c_str() << ": shape " << name
+            << " is not one of the shapes " << shapeIndex_.sortedToc()
+            << exit(FatalError);
+    }
+    return shapei;
+}
+
+
+const Foam::particleShape& Foam::granularSystem::shape
+(
+    const word& name,
+    const string& owner
+) const
+{
+    return shapes_[shapeIndex(name, owner)];
+}
+
+
 Foam::label Foam::granularSystem::addParticle
 (
     const label id,
@@ -542,14 +574,7 @@ Foam::label Foam::granularSystem::addParticle
     const quaternion& q
 )
 {
-    const label shapei = shapeIndex_.lookup(shapeName, -1);
-    if (shapei < 0)
-    {
-        FatalErrorInFunction
-            << "particle " << id << ": shape " << shapeName
-            << " is not one of the shapes " << shapeIndex_.sortedToc()
-            << exit(FatalError);
-    }
+    const label shapei = shapeIndex(shapeName, "particle " + Foam::name(id));
     const label materiali = materials_.find(materialName);
     if (materiali < 0 || materials_.isWall(materiali))
     {
@@ -631,7 +656,7 @@ Foam::label Foam::granularSystem::evolve(const scalar Deltat)
     const scalar dt = Deltat/n;
     for (label k = 0; k < n; ++k)
     {
-        subStep(dt);
+        subStep(dt, k == n - 1);
     }
     stats_.nSubSteps = n;
     return n;

@@ -74,6 +74,45 @@ namespace
                 << exit(FatalError);
         }
     }
+
+    //- Write a VTK XML polydata file through a temporary file: the
+    //- points, the cells of one kind ("Polys" or "Verts") and the arrays
+    //- that writeData writes inside a dataKind element ("CellData" or
+    //- "PointData")
+    template<class DataWriter>
+    void writePolyData
+    (
+        const fileName& file,
+        const UList<point>& points,
+        const char* cellKind,
+        const UList<label>& connectivity,
+        const UList<label>& offsets,
+        const char* dataKind,
+        const char* activeScalars,
+        const DataWriter& writeData
+    )
+    {
+        {
+            OFstream os(file + ".tmp");
+            os.precision(10);
+            os  << "<?xml version=\"1.0\"?>\n"
+                << "<VTKFile type=\"PolyData\" version=\"0.1\""
+                << " byte_order=\"LittleEndian\">\n<PolyData>\n"
+                << "<Piece NumberOfPoints=\"" << points.size()
+                << "\" NumberOf" << cellKind << "=\"" << offsets.size()
+                << "\">\n<Points>\n";
+            writeVectors(os, "Points", points);
+            os  << "</Points>\n<" << cellKind << ">\n";
+            writeScalars(os, "Int32", "connectivity", connectivity);
+            writeScalars(os, "Int32", "offsets", offsets);
+            os  << "</" << cellKind << ">\n<" << dataKind << " Scalars=\""
+                << activeScalars << "\">\n";
+            writeData(os);
+            os  << "</" << dataKind << ">\n</Piece>\n</PolyData>\n"
+                << "</VTKFile>\n";
+        }
+        commit(file + ".tmp", file);
+    }
 }
 
 
@@ -206,63 +245,38 @@ void Foam::granularVTKWriter::write
     const word polyName("polyhedra_" + Foam::name(index) + ".vtp");
     const word sphereName("spheres_" + Foam::name(index) + ".vtp");
 
-    {
-        const fileName file(dir_/polyName);
+    writePolyData
+    (
+        dir_/polyName, points, "Polys", connectivity, offsets,
+        "CellData", "id",
+        [&](Ostream& os)
         {
-            OFstream os(file + ".tmp");
-            os.precision(10);
-            os  << "<?xml version=\"1.0\"?>\n"
-                << "<VTKFile type=\"PolyData\" version=\"0.1\""
-                << " byte_order=\"LittleEndian\">\n<PolyData>\n"
-                << "<Piece NumberOfPoints=\"" << points.size()
-                << "\" NumberOfPolys=\"" << offsets.size() << "\">\n"
-                << "<Points>\n";
-            writeVectors(os, "Points", points);
-            os  << "</Points>\n<Polys>\n";
-            writeScalars(os, "Int32", "connectivity", connectivity);
-            writeScalars(os, "Int32", "offsets", offsets);
-            os  << "</Polys>\n<CellData Scalars=\"id\">\n";
             writeScalars(os, "Int32", "id", faceIds);
             writeVectors(os, "velocity", faceU);
             writeVectors(os, "omega", faceOmega);
-            os  << "</CellData>\n</Piece>\n</PolyData>\n</VTKFile>\n";
         }
-        commit(file + ".tmp", file);
-    }
+    );
+
+    // One vertex cell per sphere
+    labelList verts(centres.size());
+    labelList vertOffsets(centres.size());
+    forAll(verts, i)
     {
-        labelList verts(centres.size());
-        forAll(verts, i)
+        verts[i] = i;
+        vertOffsets[i] = i + 1;
+    }
+    writePolyData
+    (
+        dir_/sphereName, centres, "Verts", verts, vertOffsets,
+        "PointData", "diameter",
+        [&](Ostream& os)
         {
-            verts[i] = i;
-        }
-        labelList vertOffsets(centres.size());
-        forAll(vertOffsets, i)
-        {
-            vertOffsets[i] = i + 1;
-        }
-        const fileName file(dir_/sphereName);
-        {
-            OFstream os(file + ".tmp");
-            os.precision(10);
-            os  << "<?xml version=\"1.0\"?>\n"
-                << "<VTKFile type=\"PolyData\" version=\"0.1\""
-                << " byte_order=\"LittleEndian\">\n<PolyData>\n"
-                << "<Piece NumberOfPoints=\"" << centres.size()
-                << "\" NumberOfVerts=\"" << centres.size() << "\">\n"
-                << "<Points>\n";
-            writeVectors(os, "Points", centres);
-            os  << "</Points>\n<Verts>\n";
-            writeScalars(os, "Int32", "connectivity", verts);
-            writeScalars(os, "Int32", "offsets", vertOffsets);
-            os  << "</Verts>\n<PointData Scalars=\"diameter\">\n";
             writeScalars(os, "Int32", "id", sphereIds);
             writeScalars(os, "Float64", "diameter", diameters);
             writeVectors(os, "velocity", sphereU);
             writeVectors(os, "omega", sphereOmega);
-            os  << "</PointData>\n</Piece>\n</PolyData>\n</VTKFile>\n";
         }
-        commit(file + ".tmp", file);
-    }
+    );
 
     polyhedra_.append(Tuple2<word, scalar>(polyName, t));
     spheres_.append(Tuple2<word, scalar>(sphereName, t));
