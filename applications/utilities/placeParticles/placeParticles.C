@@ -148,6 +148,26 @@ int main(int argc, char *argv[])
         }
     }
     const FixedList<bool, 3>& periodic = granular.periodic();
+    // Images are taken over the period: along a periodic direction the
+    // region must be the whole domain
+    for (direction d = 0; d < 3; ++d)
+    {
+        if
+        (
+            periodic[d]
+         && (
+                mag(region.min()[d] - granular.domain().min()[d]) > SMALL
+             || mag(region.max()[d] - granular.domain().max()[d]) > SMALL
+            )
+        )
+        {
+            FatalIOErrorInFunction(dict)
+                << "region " << region << " does not span the domain "
+                << granular.domain() << " along the periodic direction "
+                << vector::componentNames[d] << "; give the domain's extent"
+                << " there (or leave region out)" << exit(FatalIOError);
+        }
+    }
 
     const bool hasNumber = dict.found("number");
     const bool hasPhi = dict.found("solidFraction");
