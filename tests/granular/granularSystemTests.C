@@ -144,14 +144,19 @@ TEST(granularSystem, headOnCollisionRecoversRestitutionAndDuration)
 TEST(granularSystem, elasticCollisionsKeepTheEnergy)
 {
     // A ball between two walls with 0.2 D of play, no gravity, e_n = 1:
-    // 1000 collisions. The change of energy is a sum of per-collision
-    // errors that depend on where the contact starts between two steps, so
-    // it is not monotone in dt. Asserted: below 1e-6 at T_c/640 and
-    // T_c/2560 for kn = 500. Printed, not asserted: kn = 1e4, where the
-    // change levels off near 2e-6 from T_c/640 down (an open finding).
-    for (const scalar kn : {500.0, 1e4})
+    // 1000 collisions. Velocity Verlet conserves energy inside a contact
+    // (a shadow energy), but the spring switches on and off between two
+    // steps: each collision changes the energy by O((omega dt)^2) times a
+    // function of where the contact starts and ends within a step, of
+    // mean zero over those phases (measured with a stand-alone 1D Verlet
+    // over 400 phases: rms 2.9e-4 at Tc/20, 4.6e-6 at Tc/80, mean below
+    // 1e-7 and 1e-11). Consecutive collisions have slowly drifting phases,
+    // so 1000 of them add up to between a random walk and a coherent sum,
+    // not monotone in dt (the printed values). Asserted: below 1e-6 at
+    // Tc/5120 for kn = 500, 1e4 and 1e5.
+    for (const scalar kn : {500.0, 1e4, 1e5})
     {
-        for (const label N : {20, 160, 640, 2560})
+        for (const label N : {20, 640, 5120})
         {
             auto sys = makeSystem
             (
@@ -183,9 +188,9 @@ TEST(granularSystem, elasticCollisionsKeepTheEnergy)
             const scalar change = (sys->kineticEnergy() - E0)/E0;
             std::cout << "kn " << kn << ": relative energy change after 1000"
                 << " elastic collisions at Tc/" << N << ": " << change << nl;
-            if (kn == 500 && N >= 640)
+            if (N == 5120)
             {
-                EXPECT_LT(mag(change), 1e-6) << "Tc/" << N;
+                EXPECT_LT(mag(change), 1e-6) << "kn " << kn << ", Tc/" << N;
             }
         }
     }

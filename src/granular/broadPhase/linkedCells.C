@@ -10,6 +10,8 @@ License
     option) any later version. See <http://www.gnu.org/licenses/>.
 
 Class
+    Foam::linkedCells
+
 \*---------------------------------------------------------------------------*/
 
 #include "linkedCells.H"
@@ -26,7 +28,9 @@ Foam::linkedCells::linkedCells
     domain_(domain),
     periodic_(periodic),
     nCells_(Zero),
-    cellWidth_(Zero)
+    cellWidth_(Zero),
+    span_(domain.span()),
+    anyPeriodic_(periodic[0] || periodic[1] || periodic[2])
 {
     if (!(minCellWidth > 0))
     {
@@ -41,6 +45,41 @@ Foam::linkedCells::linkedCells
         nCells_[d] = max(label(1), label(span[d]/minCellWidth));
         cellWidth_[d] = span[d]/nCells_[d];
     }
+
+    // The neighbour table: with fewer than three cells along a periodic
+    // direction the neighbours repeat, and are listed once
+    const label nTotal = cmptProduct(nCells_);
+    neighbourStart_.setSize(nTotal + 1);
+    DynamicList<label> all(27*nTotal);
+    DynamicList<label> around(27);
+    for (label c = 0; c < nTotal; ++c)
+    {
+        neighbourStart_[c] = all.size();
+        const labelVector ijk
+        (
+            c % nCells_.x(),
+            (c/nCells_.x()) % nCells_.y(),
+            c/(nCells_.x()*nCells_.y())
+        );
+        around.clear();
+        for (label dz = -1; dz <= 1; ++dz)
+        {
+            for (label dy = -1; dy <= 1; ++dy)
+            {
+                for (label dx = -1; dx <= 1; ++dx)
+                {
+                    const label n = index(ijk + labelVector(dx, dy, dz));
+                    if (n >= 0 && !around.found(n))
+                    {
+                        around.append(n);
+                    }
+                }
+            }
+        }
+        all.append(around);
+    }
+    neighbourStart_[nTotal] = all.size();
+    neighbours_.transfer(all);
 }
 
 
@@ -99,66 +138,73 @@ void Foam::linkedCells::findPairs
 ) const
 {
     pairs.clear();
+    const label n = x.size();
     const label nTotal = cmptProduct(nCells_);
 
-    // Cell lists: head of each cell, next of each particle
-    labelList head(nTotal, -1);
-    labelList next(x.size(), -1);
-    labelList cellIndex(x.size());
-    forAll(x, i)
+    // Counting sort by cell; particles of a cell in increasing index
+    cellStart_.setSize(nTotal + 1);
+    cellStart_ = 0;
+    cellOfParticle_.setSize(n);
+    for (label i = 0; i < n; ++i)
     {
-        cellIndex[i] = index(cellOf(x[i]));
-        next[i] = head[cellIndex[i]];
-        head[cellIndex[i]] = i;
+        cellOfParticle_[i] = index(cellOf(x[i]));
+        ++cellStart_[cellOfParticle_[i] + 1];
     }
-
-    // The distinct neighbour cells of each cell (27 or fewer)
-    DynamicList<label> around(27);
     for (label c = 0; c < nTotal; ++c)
     {
-        if (head[c] < 0)
+        cellStart_[c + 1] += cellStart_[c];
+    }
+    sorted_.setSize(n);
+    sortedX_.setSize(n);
+    sortedR_.setSize(n);
+    {
+        labelList fill(SubList<label>(cellStart_, nTotal));
+        for (label i = 0; i < n; ++i)
         {
-            continue;
+            const label k = fill[cellOfParticle_[i]]++;
+            sorted_[k] = i;
+            sortedX_[k] = x[i];
+            sortedR_[k] = r[i];
         }
-        const labelVector ijk
-        (
-            c % nCells_.x(),
-            (c/nCells_.x()) % nCells_.y(),
-            c/(nCells_.x()*nCells_.y())
-        );
+    }
 
-        around.clear();
-        for (label dz = -1; dz <= 1; ++dz)
+    // Each particle, its partners of larger index in order
+    for (label i = 0; i < n; ++i)
+    {
+        const point& xi = x[i];
+        const scalar reach = r[i] + skin;
+        const label c = cellOfParticle_[i];
+        partners_.clear();
+        for (label m = neighbourStart_[c]; m < neighbourStart_[c + 1]; ++m)
         {
-            for (label dy = -1; dy <= 1; ++dy)
+            const label nc = neighbours_[m];
+            for (label k = cellStart_[nc]; k < cellStart_[nc + 1]; ++k)
             {
-                for (label dx = -1; dx <= 1; ++dx)
+                if
+                (
+                    sorted_[k] > i
+                 && magSqr(separation(xi, sortedX_[k]))
+                  < sqr(reach + sortedR_[k])
+                )
                 {
-                    const label n = index(ijk + labelVector(dx, dy, dz));
-                    if (n >= 0 && head[n] >= 0 && !around.found(n))
-                    {
-                        around.append(n);
-                    }
+                    partners_.append(sorted_[k]);
                 }
             }
         }
-
-        for (label i = head[c]; i >= 0; i = next[i])
+        // A few partners: insertion sort
+        for (label a = 1; a < partners_.size(); ++a)
         {
-            for (const label n : around)
+            const label j = partners_[a];
+            label b = a;
+            for (; b > 0 && partners_[b - 1] > j; --b)
             {
-                for (label j = head[n]; j >= 0; j = next[j])
-                {
-                    if
-                    (
-                        j > i
-                     && magSqr(separation(x[i], x[j])) < sqr(r[i] + r[j] + skin)
-                    )
-                    {
-                        pairs.append(labelPair(i, j));
-                    }
-                }
+                partners_[b] = partners_[b - 1];
             }
+            partners_[b] = j;
+        }
+        for (const label j : partners_)
+        {
+            pairs.append(labelPair(i, j));
         }
     }
 }

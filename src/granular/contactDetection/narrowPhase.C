@@ -263,51 +263,6 @@ namespace
 
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
 
-bool Foam::narrowPhase::sphereSphere
-(
-    const point& ci,
-    const scalar ri,
-    const point& cj,
-    const scalar rj,
-    contactGeometry& contact
-)
-{
-    const vector d = ci - cj;
-    const scalar dist = mag(d);
-    const scalar overlap = ri + rj - dist;
-    if (overlap <= 0)
-    {
-        return false;
-    }
-
-    // Concentric spheres have no normal: any direction will do
-    const vector n = dist > VSMALL ? d/dist : vector(1, 0, 0);
-    // Midway through the overlap lens
-    contact.set(cj + (rj - 0.5*overlap)*n, n, overlap);
-    return true;
-}
-
-
-bool Foam::narrowPhase::spherePlane
-(
-    const point& c,
-    const scalar r,
-    const point& p0,
-    const vector& n,
-    contactGeometry& contact
-)
-{
-    const scalar overlap = r - ((c - p0) & n);
-    if (overlap <= 0)
-    {
-        return false;
-    }
-
-    contact.set(c - (r - 0.5*overlap)*n, n, overlap);
-    return true;
-}
-
-
 bool Foam::narrowPhase::spherePolyhedron
 (
     const point& c,

@@ -60,6 +60,7 @@ void Foam::granularSystem::readCollision(const dictionary& collisionDict)
     (
         "periodic", FixedList<bool, 3>(false)
     );
+    anyPeriodic_ = periodic_[0] || periodic_[1] || periodic_[2];
 
     if (const dictionary* wallsDict = collisionDict.findDict("walls"))
     {
@@ -84,8 +85,6 @@ void Foam::granularSystem::updateParticleData()
     radius_.setSize(n);
     Fext_.setSize(n, Zero);
     Text_.setSize(n, Zero);
-    Upred_.setSize(n, Zero);
-    omegaPred_.setSize(n, Zero);
     Deq_.setSize(n);
     sphereRadius_.setSize(n);
 
@@ -150,11 +149,12 @@ void Foam::granularSystem::updateParticleData()
     );
     cells_.reset(new linkedCells(domain_, periodic_, cellWidth));
     xAtBuild_.clear();
+    rebuildList_ = true;
     history_.clear();
 }
 
 
-void Foam::granularSystem::wrapPeriodic(rigidParticle& p) const
+void Foam::granularSystem::wrapPeriodicDirections(rigidParticle& p) const
 {
     point x = p.position();
     bool moved = false;
@@ -181,41 +181,43 @@ void Foam::granularSystem::wrapPeriodic(rigidParticle& p) const
 
 void Foam::granularSystem::updateCandidates()
 {
-    bool rebuild = xAtBuild_.size() != size();
-    if (!rebuild)
-    {
-        const scalar limit2 = sqr(0.5*skin_);
-        for (label i = 0; i < size(); ++i)
-        {
-            if
-            (
-                magSqr
-                (
-                    cells_->separation(particles_[i].position(), xAtBuild_[i])
-                )
-              > limit2
-            )
-            {
-                rebuild = true;
-                break;
-            }
-        }
-    }
-    if (!rebuild)
+    if (!rebuildList_ && xAtBuild_.size() == size())
     {
         return;
     }
+    rebuildList_ = false;
 
     xAtBuild_.setSize(size());
     for (label i = 0; i < size(); ++i)
     {
         xAtBuild_[i] = particles_[i].position();
     }
-    candidates_.clear();
-    cells_->findPairs(xAtBuild_, radius_, skin_, candidates_);
-    // Canonical order: the forces are summed in the same order whenever
+    // In (i, j) order: the forces are summed in the same order whenever
     // the list was built, so that a restart continues bitwise
-    std::sort(candidates_.begin(), candidates_.end());
+    cells_->findPairs(xAtBuild_, radius_, skin_, candidates_);
+
+    // A particle moves by at most skin/2 relative to a wall before the
+    // next build; a whole skin is kept, as for the pairs
+    nearWallStart_.setSize(size() + 1);
+    DynamicList<label> near(nearWalls_.size());
+    for (label i = 0; i < size(); ++i)
+    {
+        nearWallStart_[i] = near.size();
+        if (particles_[i].motion() != rigidParticle::motionKind::free)
+        {
+            continue;
+        }
+        forAll(walls_, w)
+        {
+            if (walls_[w].distance(xAtBuild_[i]) <= radius_[i] + skin_)
+            {
+                near.append(w);
+            }
+        }
+    }
+    nearWallStart_[size()] = near.size();
+    nearWalls_.transfer(near);
+
     ++stats_.nListBuilds;
 }
 
@@ -256,8 +258,9 @@ void Foam::granularSystem::addWallForces(const label i, const scalar dt)
         return;
     }
     contactGeometry c;
-    forAll(walls_, w)
+    for (label k = nearWallStart_[i]; k < nearWallStart_[i + 1]; ++k)
     {
+        const label w = nearWalls_[k];
         const planeWall& wall = walls_[w];
         if (wall.distance(pi.position()) > radius_[i])
         {
@@ -285,7 +288,9 @@ void Foam::granularSystem::addWallForces(const label i, const scalar dt)
                 continue;
             }
         }
-        const vector Urel = velocityAt(i, c.position);
+        vector Ui, omegai;
+        pi.predictedVelocities(dt, Ui, omegai);
+        const vector Urel = Ui + (omegai ^ (c.position - pi.position()));
         const contactLaw& law = laws_->law(materialOf_[i], wallMaterial_[w]);
         const vector F =
             contactForce(law, c, Urel, pi.mass(), dt, wallKey(i, w));
@@ -296,8 +301,7 @@ void Foam::granularSystem::addWallForces(const label i, const scalar dt)
             (
                 law.regionTorque
                 (
-                    c.normal, omegaPred_[i], c.spread,
-                    pi.mass(), F & c.normal
+                    c.normal, omegai, c.spread, pi.mass(), F & c.normal
                 )
             );
         }
@@ -313,7 +317,6 @@ void Foam::granularSystem::addPairForces(const scalar dt)
 {
     using motionKind = rigidParticle::motionKind;
 
-    updateCandidates();
     stats_.nCandidatePairs = candidates_.size();
 
     contactGeometry c;
@@ -369,6 +372,18 @@ void Foam::granularSystem::addPairForces(const scalar dt)
           : !jMoves ? pi.mass()
           : pi.mass()*pj.mass()/(pi.mass() + pj.mass());
 
+        // Velocities predicted to the end of the sub-step, for the
+        // dashpots
+        vector Ui, omegai, Uj, omegaj;
+        pi.predictedVelocities(dt, Ui, omegai);
+        pj.predictedVelocities(dt, Uj, omegaj);
+        const auto relativeVelocity = [&](const point& p)
+        {
+            return
+                (Ui + (omegai ^ (p - pi.position())))
+              - (Uj + (omegaj ^ (p - shift - pj.position())));
+        };
+
         const contactLaw& law = laws_->law(materialOf_[i], materialOf_[j]);
         if (c.nPoints > 1 && !law.needsHistory())
         {
@@ -387,8 +402,7 @@ void Foam::granularSystem::addPairForces(const scalar dt)
             for (label k = 0; k < c.nPoints; ++k)
             {
                 const point& pk = c.points[k];
-                const vector Uk =
-                    velocityAt(i, pk) - velocityAt(j, pk - shift);
+                const vector Uk = relativeVelocity(pk);
                 const vector Fk =
                     (c.depths[k]/sumDepth)
                    *law.force(c.depths[k], c.normal, Uk, M, dt, unused);
@@ -402,8 +416,7 @@ void Foam::granularSystem::addPairForces(const scalar dt)
             );
             continue;
         }
-        const vector Urel =
-            velocityAt(i, c.position) - velocityAt(j, c.position - shift);
+        const vector Urel = relativeVelocity(c.position);
         const vector F = contactForce(law, c, Urel, M, dt, pairKey(i, j));
         pi.addForceAt(F, c.position);
         pj.addForceAt(-F, c.position - shift);
@@ -411,7 +424,7 @@ void Foam::granularSystem::addPairForces(const scalar dt)
         {
             const vector T = law.regionTorque
             (
-                c.normal, omegaPred_[i] - omegaPred_[j],
+                c.normal, omegai - omegaj,
                 c.spread, M, F & c.normal
             );
             pi.addTorque(T);
@@ -431,39 +444,66 @@ void Foam::granularSystem::addPairForces(const scalar dt)
 }
 
 
-void Foam::granularSystem::subStep(const scalar dt, const bool last)
+void Foam::granularSystem::subStep
+(
+    const scalar dt,
+    const bool finishPrevious,
+    const bool last
+)
 {
-    // Three passes over the particles, each record read once per pass:
-    // (1) first half kick and drift, start of the force sum, wall
-    // contacts (they involve one particle); (2) pair contacts; (3) second
-    // half kick, and on the last sub-step of evolve the kinetic energy
-    const bool walls = contactsOn_ && walls_.size();
+    // (1) The previous sub-step's second half kick (same arithmetic as a
+    // pass of its own, one sweep over the particles fewer), the first half
+    // kick and drift, the start of the force sum, and whether the Verlet
+    // list must be rebuilt
+    const bool checkList = contactsOn_ && xAtBuild_.size() == size();
+    const scalar limit2 = sqr(0.5*skin_);
     for (label i = 0; i < size(); ++i)
     {
         rigidParticle& p = particles_[i];
-        p.kickDrift(dt);
-        wrapPeriodic(p);
-        p.predictedVelocities(dt, Upred_[i], omegaPred_[i]);
-        p.clearForces();
-        p.addForce(p.mass()*g_ + Fext_[i]);
-        p.addTorque(Text_[i]);
-        if (walls)
-        {
-            addWallForces(i, dt);
-        }
-    }
-
-    if (contactsOn_)
-    {
-        addPairForces(dt);
-    }
-
-    if (!last)
-    {
-        for (rigidParticle& p : particles_)
+        if (finishPrevious)
         {
             p.kick(dt);
         }
+        p.kickDrift(dt);
+        wrapPeriodic(p);
+        p.clearForces();
+        p.addForce(p.mass()*g_);
+        if (externalForcesOn_)
+        {
+            p.addForce(Fext_[i]);
+            p.addTorque(Text_[i]);
+        }
+        if
+        (
+            checkList
+         && magSqr(cells_->separation(p.position(), xAtBuild_[i])) > limit2
+        )
+        {
+            rebuildList_ = true;
+        }
+    }
+
+    // (2) Contacts: walls, then pairs
+    if (contactsOn_)
+    {
+        updateCandidates();
+        if (walls_.size())
+        {
+            for (label i = 0; i < size(); ++i)
+            {
+                if (nearWallStart_[i + 1] > nearWallStart_[i])
+                {
+                    addWallForces(i, dt);
+                }
+            }
+        }
+        addPairForces(dt);
+    }
+
+    // (3) On the last sub-step of evolve: its second half kick, and the
+    // kinetic energy (otherwise the kick opens the next sub-step's pass)
+    if (!last)
+    {
         return;
     }
     scalar E = 0;
@@ -492,11 +532,14 @@ Foam::granularSystem::granularSystem
     laws_(),
     domain_(),
     periodic_(false),
+    anyPeriodic_(false),
     subStepsPerContact_(20),
     skin_(-1),
     g_(Zero),
     contactsOn_(true),
-    dtMax_(VGREAT)
+    externalForcesOn_(false),
+    dtMax_(VGREAT),
+    rebuildList_(true)
 {
     const dictionary& shapesDict = particleDict.subDict("shapes");
     for (const word& name : shapesDict.toc())
@@ -642,6 +685,7 @@ void Foam::granularSystem::clearExternalForces()
 {
     Fext_ = Zero;
     Text_ = Zero;
+    externalForcesOn_ = false;
 }
 
 
@@ -656,7 +700,7 @@ Foam::label Foam::granularSystem::evolve(const scalar Deltat)
     const scalar dt = Deltat/n;
     for (label k = 0; k < n; ++k)
     {
-        subStep(dt, k == n - 1);
+        subStep(dt, k > 0, k == n - 1);
     }
     stats_.nSubSteps = n;
     return n;

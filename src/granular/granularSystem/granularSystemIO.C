@@ -131,7 +131,7 @@ void Foam::granularSystem::readParticles(const fileName& file)
                 << exit(FatalIOError);
         }
 
-        // Optional: velocity, body angular velocity, force, torque
+        // Optional: velocity, angular velocity (world), force, torque
         FixedList<vector, 4> extra(Zero);
         label nExtra = 0;
         token next(is);
@@ -170,7 +170,7 @@ void Foam::granularSystem::readParticles(const fileName& file)
         }
         p.setMotion(rigidParticle::motionKindNames[motionName]);
         p.setVelocity(extra[0]);
-        p.setOmegaBody(extra[1]);
+        p.setOmega(extra[1]);
         p.setStartForces(extra[2], extra[3]);
 
         t = token(is);
@@ -217,7 +217,7 @@ void Foam::granularSystem::writeParticles(const fileName& dir) const
             << "}\n";
         IOobject::writeDivider(os);
         os  << "\n// id shape material motion position (w x y z) velocity"
-            << " omegaBody force torque\n"
+            << " omega force torque\n"
             << "particles\n(\n";
         for (label i = 0; i < size(); ++i)
         {
@@ -229,7 +229,7 @@ void Foam::granularSystem::writeParticles(const fileName& dir) const
                 << p.position() << " ("
                 << q.w() << ' ' << q.v().x() << ' ' << q.v().y() << ' '
                 << q.v().z() << ") "
-                << p.velocity() << ' ' << p.omegaBody() << ' '
+                << p.velocity() << ' ' << p.omega() << ' '
                 << p.force() << ' ' << p.torque() << ")\n";
         }
         os  << ");\n";

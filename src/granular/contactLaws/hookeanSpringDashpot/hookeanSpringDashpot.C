@@ -201,15 +201,22 @@ Foam::vector Foam::contactLaws::hookeanSpringDashpot::force
     vector&
 ) const
 {
-    const vector Fn = normalForce(delta, n, Urel, M);
+    // One square root per contact: 2 gamma_n M = 2 zeta sqrt(k_n M), and
+    // |F_n| is the magnitude of its component along the unit normal
+    const scalar Un = Urel & n;
+    const scalar twoGammanM = 2*dampingRatio_*sqrt(kn_*M);
+    const scalar fn = kn_*delta - twoGammanM*Un;
 
     // Tangential dashpot, capped by Coulomb's limit (eq 22)
-    const vector Vt = Urel - (Urel & n)*n;
-    const vector Fdt = -2*gammat(M)*M*Vt;
-    const scalar magFdt = mag(Fdt);
-    const scalar cap = muc_*mag(Fn);
+    const vector Fdt =
+        -(gammat_ < 0 ? twoGammanM : 2*gammat_*M)*(Urel - Un*n);
+    const scalar cap = muc_*mag(fn);
+    const scalar magSqrFdt = magSqr(Fdt);
 
-    return magFdt > cap ? Fn + (cap/magFdt)*Fdt : Fn + Fdt;
+    return
+        magSqrFdt > sqr(cap)
+      ? fn*n + (cap/sqrt(magSqrFdt))*Fdt
+      : fn*n + Fdt;
 }
 
 
