@@ -40,11 +40,6 @@ tensor randomRotation(Random& rnd)
     return quaternion(axis, 2*constant::mathematical::pi*rnd.sample01<scalar>()).R();
 }
 
-vector randomUnit(Random& rnd)
-{
-    return normalised(rnd.sample01<vector>() - vector::uniform(0.5));
-}
-
 } // End anonymous namespace
 
 
