@@ -56,6 +56,8 @@ Usage
 #include "pimpleControl.H"
 #include "fvOptions.H"
 #include "meanFlowControl.H"
+#include "dlmfdCoupling.H"
+#include "uniformDimensionedFields.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -110,9 +112,19 @@ int main(int argc, char *argv[])
             laminarTransport.correct();
         }
 
+        // Granular predictor, fictitious domain, granular corrector
+        if (particles.valid())
+        {
+            particles->evolve(U);
+        }
+
         meanFlow->log(U);
 
         runTime.write();
+        if (particles.valid())
+        {
+            particles->write();
+        }
 
         runTime.printExecutionTime(Info);
     }

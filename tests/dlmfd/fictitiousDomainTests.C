@@ -1,0 +1,267 @@
+/*---------------------------------------------------------------------------*\
+  dlmfdFoam: DLM/FD particle-resolved simulation of particulate flows
+-------------------------------------------------------------------------------
+License
+    This file is part of dlmfdFoam, an extension of OpenFOAM.
+
+    dlmfdFoam is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by the
+    Free Software Foundation, either version 3 of the License, or (at your
+    option) any later version. See <http://www.gnu.org/licenses/>.
+
+Description
+    The fictitious-domain step on a box mesh of 24^3 cells: after the step
+    the fluid at every collocation point moves with the body (to the CG
+    tolerance); the step exchanges momentum and angular momentum between
+    fluid and particle without creating any (the least-squares weights
+    reproduce constants and linear fields, so the multipliers' force and
+    moment reach the fluid whole); light (m = 0.5), neutral (m = 1) and
+    heavy particles alike; a fluid already moving rigidly needs no force;
+    a cell two particles claim goes to the closer centre.
+
+\*---------------------------------------------------------------------------*/
+
+#include "foamTestCase.H"
+#include "fictitiousDomain.H"
+#include "platonicSolid.H"
+#include "sphere.H"
+#include "mathematicalConstants.H"
+
+#include <gtest/gtest.h>
+
+using namespace Foam;
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- A smooth, non-rigid velocity field
+vector swirl(const point& x)
+{
+    using constant::mathematical::twoPi;
+    return vector
+    (
+        0.1*std::sin(twoPi*x.y()) + 0.02,
+        0.05*std::cos(twoPi*x.z()),
+        0.08*std::sin(twoPi*x.x())*std::cos(twoPi*x.y())
+    );
+}
+
+
+tmp<volVectorField> makeU(const fvMesh& mesh)
+{
+    tmp<volVectorField> tU
+    (
+        new volVectorField
+        (
+            IOobject("U", mesh.time().timeName(), mesh),
+            mesh,
+            dimensionedVector(dimVelocity, Zero),
+            "calculated"
+        )
+    );
+    forAll(mesh.C(), c)
+    {
+        tU.ref()[c] = swirl(mesh.C()[c]);
+    }
+    return tU;
+}
+
+
+//- Momentum and angular momentum (about the origin) of the fluid, plus
+//- those of the particles' excess mass (m - 1), all over rho_f
+void totals
+(
+    const fvMesh& mesh,
+    const volVectorField& U,
+    const UList<fictitiousDomain::body>& bodies,
+    const UList<vector>& V,
+    const UList<vector>& omega,
+    vector& P,
+    vector& L
+)
+{
+    P = Zero;
+    L = Zero;
+    forAll(U, c)
+    {
+        P += mesh.V()[c]*U[c];
+        L += mesh.V()[c]*(mesh.C()[c] ^ U[c]);
+    }
+    forAll(bodies, b)
+    {
+        const fictitiousDomain::body& B = bodies[b];
+        const scalar mv = B.excessDensity*B.shape->volume();
+        const tensor J = B.R & B.shape->volumeInertia() & B.R.T();
+        P += mv*V[b];
+        L += mv*(B.centre ^ V[b]) + B.excessDensity*(J & omega[b]);
+    }
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+TEST(fictitiousDomain, constraintHoldsAndMomentumIsKeptForAnyDensityRatio)
+{
+    for (const scalar m : {0.5, 1.0, 1.01, 3.0})
+    {
+        test::foamTestCase tc;
+        const fvMesh& mesh = tc.makeBoxMesh(24, 24, 24, vector::one);
+        tmp<volVectorField> tU = makeU(mesh);
+        volVectorField& U = tU.ref();
+
+        particleShapes::sphere ball("ball", 0.3);
+        particleShapes::platonicSolid cube("cube", "cube", 0.25);
+        List<fictitiousDomain::body> bodies(2);
+        bodies[0].shape = &ball;
+        bodies[0].centre = point(0.3, 0.5, 0.45);
+        bodies[0].V = vector(0.01, -0.02, 0.03);
+        bodies[0].omega = vector(0.5, 0, -0.2);
+        bodies[1].shape = &cube;
+        bodies[1].centre = point(0.72, 0.5, 0.55);
+        bodies[1].R = quaternion(normalised(vector(1, 2, 3)), 0.7).R();
+        bodies[1].omega = vector(0, 0.4, 0);
+        for (auto& b : bodies)
+        {
+            b.excessDensity = m - 1;
+        }
+
+        dictionary dict;
+        fictitiousDomain fd(mesh, dict);
+
+        vector P0, L0;
+        totals
+        (
+            mesh, U, bodies, vectorField({bodies[0].V, bodies[1].V}),
+            vectorField({bodies[0].omega, bodies[1].omega}), P0, L0
+        );
+        const List<fictitiousDomain::result>& res = fd.solve(U, bodies, 0.01);
+
+        vectorField V(2), omega(2);
+        forAll(bodies, b)
+        {
+            V[b] = bodies[b].V + res[b].dV;
+            omega[b] = bodies[b].omega + res[b].dOmega;
+            EXPECT_GT(res[b].nInterior, 100) << "m " << m;
+            EXPECT_GT(res[b].nSurface, 100) << "m " << m;
+            EXPECT_LT(res[b].constraintError, 1e-9) << "m " << m << " body " << b;
+        }
+        vector P1, L1;
+        totals(mesh, U, bodies, V, omega, P1, L1);
+        std::cout << "m " << m << ": momentum change " << mag(P1 - P0)
+            << ", angular momentum change " << mag(L1 - L0)
+            << " (of " << mag(P0) << ", " << mag(L0) << "); sphere |dV| "
+            << mag(res[0].dV) << ", CG iterations " << res[0].iterations << nl;
+        EXPECT_LT(mag(P1 - P0), 1e-12*mag(P0)) << "m " << m;
+        EXPECT_LT(mag(L1 - L0), 1e-12*mag(L0)) << "m " << m;
+    }
+}
+
+
+TEST(fictitiousDomain, rigidFluidNeedsNoForceAndFixedBodiesStayFixed)
+{
+    test::foamTestCase tc;
+    const fvMesh& mesh = tc.makeBoxMesh(20, 20, 20, vector::one);
+    const vector V0(0.02, 0.01, -0.03), omega0(0.3, -0.1, 0.2);
+    const point X(0.5, 0.5, 0.5);
+    volVectorField U
+    (
+        IOobject("U", mesh.time().timeName(), mesh),
+        mesh,
+        dimensionedVector(dimVelocity, Zero),
+        "calculated"
+    );
+    forAll(U, c)
+    {
+        U[c] = V0 + (omega0 ^ (mesh.C()[c] - X));
+    }
+    particleShapes::sphere ball("ball", 0.4);
+    List<fictitiousDomain::body> bodies(1);
+    bodies[0].shape = &ball;
+    bodies[0].centre = X;
+    bodies[0].V = V0;
+    bodies[0].omega = omega0;
+    bodies[0].excessDensity = 1;
+
+    dictionary dict;
+    fictitiousDomain fd(mesh, dict);
+    fictitiousDomain::result r;
+    try
+    {
+        r = fd.solve(U, bodies, 0.01)[0];
+    }
+    catch (const Foam::error& e)
+    {
+        FAIL() << e.message();
+    }
+    EXPECT_LT(mag(r.sumLambda), 1e-12);
+    EXPECT_LT(mag(r.dV), 1e-12);
+    EXPECT_LT(mag(r.dOmega), 1e-12);
+
+    // Fixed: the fluid is brought to rest inside, the body keeps its speed
+    bodies[0].free = false;
+    bodies[0].V = Zero;
+    bodies[0].omega = Zero;
+    const fictitiousDomain::result f = fd.solve(U, bodies, 0.01)[0];
+    EXPECT_EQ(f.dV, vector::zero);
+    EXPECT_EQ(f.dOmega, vector::zero);
+    EXPECT_LT(f.constraintError, 1e-9);
+    for (const label c : f.interiorCells)
+    {
+        EXPECT_LT(mag(U[c]), 1e-9) << c;
+    }
+}
+
+
+TEST(fictitiousDomain, cellClaimedByTwoParticlesGoesToTheCloserCentre)
+{
+    // Two spheres overlapping (as in a contact): no cell serves both, and
+    // each shared cell goes to the closer centre
+    test::foamTestCase tc;
+    const fvMesh& mesh = tc.makeBoxMesh(24, 24, 24, vector::one);
+    tmp<volVectorField> tU = makeU(mesh);
+    particleShapes::sphere ball("ball", 0.3);
+    List<fictitiousDomain::body> bodies(2);
+    for (auto& b : bodies)
+    {
+        b.shape = &ball;
+        b.excessDensity = 1;
+    }
+    bodies[0].centre = point(0.38, 0.5, 0.5);
+    bodies[1].centre = point(0.62, 0.5, 0.5);
+
+    dictionary dict;
+    fictitiousDomain fd(mesh, dict);
+    const List<fictitiousDomain::result>& res = fd.solve(tU.ref(), bodies, 0.01);
+
+    labelHashSet first(res[0].interiorCells);
+    label inBoth = 0;
+    for (const label c : res[1].interiorCells)
+    {
+        inBoth += first.found(c);
+    }
+    EXPECT_EQ(inBoth, 0);
+    label checked = 0;
+    forAll(res, b)
+    {
+        for (const label c : res[b].interiorCells)
+        {
+            const point& x = mesh.C()[c];
+            const scalar d0 = mag(x - bodies[0].centre);
+            const scalar d1 = mag(x - bodies[1].centre);
+            if (d0 < 0.15 && d1 < 0.15)
+            {
+                ++checked;
+                EXPECT_LE(b == 0 ? d0 : d1, b == 0 ? d1 : d0) << c;
+            }
+        }
+        EXPECT_LT(res[b].constraintError, 1e-9) << b;
+    }
+    EXPECT_GT(checked, 4);
+}
+
+
+// ************************************************************************* //
