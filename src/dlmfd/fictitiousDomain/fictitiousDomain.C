@@ -375,7 +375,6 @@ Foam::fictitiousDomain::solve
 {
     const vectorField& C = mesh_.C();
     const scalarField& V = mesh_.V();
-    const labelListList& cellCells = mesh_.cellCells();
     const scalar zPlane = twoD_ ? mesh_.bounds().centre().z() : 0;
 
     // The fluid without the previous multipliers' force
@@ -453,30 +452,26 @@ Foam::fictitiousDomain::solve
                 shape, B.centre, B.R, surfaceSpacing_*h, zPlane, pts
             );
         }
+        // Each surface point's velocity is the linear least-squares fit
+        // of the fluid cells around it outside the body, extrapolated to
+        // the point: the constraint puts the no-slip surface where the
+        // body's surface is, without making those cells move rigidly
+        // (a stencil across the surface did: the body acted half a cell
+        // thicker)
         stencils[b].setSize(pts.size());
-        DynamicList<label> hosts;
+        DynamicList<label> ball;
         forAll(pts, k)
         {
-            hosts.clear();
-            search_.cellsInBall(pts[k], 1.5*h, hosts);
-            label host = -1;
-            scalar best = GREAT;
-            for (const label c : hosts)
+            ball.clear();
+            search_.cellsInBall(pts[k], 2*h, ball);
+            DynamicList<label> st;
+            for (const label c : ball)
             {
-                const scalar d2 = magSqr(C[c] - pts[k]);
-                if (d2 < best)
+                if (!particleGeometry::contains(shape, B.centre, B.R, C[c]))
                 {
-                    best = d2;
-                    host = c;
+                    st.append(c);
                 }
             }
-            if (host < 0)
-            {
-                // Outside the mesh (a particle against a wall): no point
-                continue;
-            }
-            labelList st(1, host);
-            st.append(cellCells[host]);
             for (const label c : st)
             {
                 claim(c, b, magSqr(C[c] - B.centre));
