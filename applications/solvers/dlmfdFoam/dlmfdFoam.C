@@ -58,6 +58,7 @@ Usage
 #include "meanFlowControl.H"
 #include "dlmfdCoupling.H"
 #include "uniformDimensionedFields.H"
+#include "clockTime.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -88,6 +89,10 @@ int main(int argc, char *argv[])
 
     Info<< "\nStarting time loop\n" << endl;
 
+    // Wall-clock seconds per phase, for the cost line at the end
+    clockTime clock;
+    scalar fluidSeconds = 0, outputSeconds = 0;
+
     while (runTime.run())
     {
         #include "readTimeControls.H"
@@ -97,6 +102,8 @@ int main(int argc, char *argv[])
         ++runTime;
 
         Info<< "Time = " << runTime.timeName() << nl << endl;
+
+        clock.timeIncrement();
 
         // --- Pressure-velocity PIMPLE corrector loop
         while (pimple.loop())
@@ -112,10 +119,13 @@ int main(int argc, char *argv[])
             laminarTransport.correct();
         }
 
+        fluidSeconds += clock.timeIncrement();
+
         // Granular predictor, fictitious domain, granular corrector
         if (particles.valid())
         {
             particles->evolve(U);
+            clock.timeIncrement();
         }
 
         meanFlow->log(U);
@@ -125,9 +135,25 @@ int main(int argc, char *argv[])
         {
             particles->write();
         }
+        outputSeconds += clock.timeIncrement();
 
         runTime.printExecutionTime(Info);
     }
+
+    // The cost by phase (communication is inside the fluid solves here:
+    // the particle phases run without any)
+    const scalar fdSeconds =
+        particles.valid() ? particles->fictitiousDomainSeconds() : 0;
+    const scalar granularSeconds =
+        particles.valid() ? particles->granularSeconds() : 0;
+    const scalar total =
+        max(fluidSeconds + fdSeconds + granularSeconds + outputSeconds, SMALL);
+    Info<< "Cost (wall clock): fluid " << fluidSeconds << " s ("
+        << 100*fluidSeconds/total << " %), DLM/FD " << fdSeconds << " s ("
+        << 100*fdSeconds/total << " %), granular " << granularSeconds
+        << " s (" << 100*granularSeconds/total << " %), output "
+        << outputSeconds << " s (" << 100*outputSeconds/total << " %)"
+        << nl << endl;
 
     Info<< "End\n" << endl;
 

@@ -80,7 +80,9 @@ Foam::dlmfdCoupling::dlmfdCoupling(const fvMesh& mesh, const vector& g)
     Fh_(),
     Th_(),
     series_(),
-    vtk_(mesh.time().path()/"VTK", mesh.time().value())
+    vtk_(mesh.time().path()/"VTK", mesh.time().value()),
+    fdSeconds_(0),
+    granularSeconds_(0)
 {
     // Walls from the mesh's planar patches, where asked for
     const IOdictionary collision(constantDict(mesh, "collisionProperties"));
@@ -165,6 +167,7 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
 
     const scalar dt = mesh_.time().deltaTValue();
     const label n = granular_.size();
+    clockTime clock;
 
     // (2) Granular predictor and the bodies of the constraint
     vectorField V0(n), omega0(n);
@@ -228,6 +231,8 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
         }
     }
 
+    fdSeconds_ += clock.timeIncrement();
+
     // (4) Granular corrector: contacts from X^n over dt
     const label nSub = granular_.evolve(dt);
 
@@ -247,6 +252,7 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
         }
     }
     U.correctBoundaryConditions();
+    granularSeconds_ += clock.timeIncrement();
 
     const granularSystem::statistics& s = granular_.stats();
     Info<< "DLM/FD: " << n << " particles, " << nPoints << " points,"
