@@ -115,6 +115,17 @@ Foam::dlmfdCoupling::dlmfdCoupling(const fvMesh& mesh, const vector& g)
     Fh_.setSize(granular_.size(), Zero);
     Th_.setSize(granular_.size(), Zero);
 
+    // The scales of seed 001 for each particle, when the fluid is
+    // Newtonian: u_g = sqrt(|m - 1| g D), t_g = D/u_g, Ga = u_g D/nu
+    scalar nu = -1;
+    {
+        const IOdictionary transport(constantDict(mesh, "transportProperties"));
+        if (transport.get<word>("transportModel") == "Newtonian")
+        {
+            nu = dimensionedScalar("nu", dimViscosity, transport).value();
+        }
+    }
+
     Info<< "DLM/FD: " << granular_.size() << " particles from "
         << particleFile << ", fluid density " << rhoFluid_ << " kg/m^3"
         << nl;
@@ -122,10 +133,18 @@ Foam::dlmfdCoupling::dlmfdCoupling(const fvMesh& mesh, const vector& g)
     {
         const rigidParticle& p = granular_.particle(i);
         const scalar m = densityRatio(i);
+        const scalar D = p.shape().equivalentDiameter();
+        const scalar ug = std::sqrt(mag(m - 1)*mag(g_)*D);
         Info<< "    particle " << granular_.id(i) << ": "
             << p.shape().name() << " (" << p.shape().type() << ", D = "
-            << p.shape().equivalentDiameter() << " m), m = " << m << ", "
-            << rigidParticle::motionKindNames[p.motion()] << nl;
+            << D << " m), m = " << m << ", "
+            << rigidParticle::motionKindNames[p.motion()];
+        if (nu > 0 && ug > 0)
+        {
+            Info<< ", Ga = " << ug*D/nu << ", u_g = " << ug << " m/s, t_g = "
+                << D/ug << " s";
+        }
+        Info<< nl;
         if (p.motion() == rigidParticle::motionKind::free && !(m > 0))
         {
             FatalErrorInFunction
