@@ -318,6 +318,7 @@ Foam::fictitiousDomain::fictitiousDomain
     twoD_(mesh.nSolutionD() == 2),
     cellOwner_(mesh.nCells(), -1),
     ownerDist2_(mesh.nCells(), GREAT),
+    ownerInside_(mesh.nCells(), false),
     touched_(),
     source_
     (
@@ -387,18 +388,33 @@ Foam::fictitiousDomain::solve
     {
         cellOwner_[c] = -1;
         ownerDist2_[c] = GREAT;
+        ownerInside_[c] = false;
     }
     touched_.clear();
-    const auto claim = [&](const label c, const label b, const scalar d2)
+    // A cell inside a body goes to the body it is inside (the one with the
+    // closer centre if inside two); a cell only in surface stencils goes
+    // to the closer centre
+    const auto claim = [&]
+    (
+        const label c,
+        const label b,
+        const scalar d2,
+        const bool inside
+    )
     {
         if (cellOwner_[c] < 0)
         {
             touched_.append(c);
         }
-        if (cellOwner_[c] < 0 || d2 < ownerDist2_[c])
+        const bool wins =
+            cellOwner_[c] < 0
+         || (inside && !ownerInside_[c])
+         || (inside == ownerInside_[c] && d2 < ownerDist2_[c]);
+        if (wins)
         {
             cellOwner_[c] = b;
             ownerDist2_[c] = d2;
+            ownerInside_[c] = inside;
         }
     };
 
@@ -440,7 +456,7 @@ Foam::fictitiousDomain::solve
             if (particleGeometry::contains(shape, B.centre, B.R, C[c]))
             {
                 interior[b].append(c);
-                claim(c, b, magSqr(C[c] - B.centre));
+                claim(c, b, magSqr(C[c] - B.centre), true);
             }
         }
 
@@ -474,7 +490,7 @@ Foam::fictitiousDomain::solve
             }
             for (const label c : st)
             {
-                claim(c, b, magSqr(C[c] - B.centre));
+                claim(c, b, magSqr(C[c] - B.centre), false);
             }
             stencils[b][k].transfer(st);
         }
