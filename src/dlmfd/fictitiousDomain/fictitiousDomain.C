@@ -312,6 +312,8 @@ Foam::fictitiousDomain::fictitiousDomain
     mesh_(mesh),
     surfacePoints_(dict.getOrDefault<Switch>("surfacePoints", true)),
     surfaceSpacing_(dict.getOrDefault<scalar>("surfacePointSpacing", 1)),
+    stencilRadius_(dict.getOrDefault<scalar>("surfaceStencilRadius", 2)),
+    retraction_(dict.getOrDefault<scalar>("surfacePointRetraction", 0)),
     tolerance_(dict.getOrDefault<scalar>("tolerance", 1e-10)),
     maxIterations_(dict.getOrDefault<label>("maxIterations", 1000)),
     search_(mesh),
@@ -340,6 +342,19 @@ Foam::fictitiousDomain::fictitiousDomain
             << "surfacePointSpacing = " << surfaceSpacing_ << " is not"
             << " allowed; it must be > 0 (in cell sizes)"
             << exit(FatalIOError);
+    }
+    if (!(stencilRadius_ >= 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "surfaceStencilRadius = " << stencilRadius_ << " is not"
+            << " allowed; it must be >= 1 (in cell sizes)"
+            << exit(FatalIOError);
+    }
+    if (!(retraction_ >= 0 && retraction_ < 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "surfacePointRetraction = " << retraction_ << " is not"
+            << " allowed; 0 <= it < 1 (in cell sizes)" << exit(FatalIOError);
     }
     if (!(tolerance_ > 0 && tolerance_ < 1))
     {
@@ -467,6 +482,23 @@ Foam::fictitiousDomain::solve
             (
                 shape, B.centre, B.R, surfaceSpacing_*h, zPlane, pts
             );
+            if (retraction_ > 0)
+            {
+                // Towards the centre by retraction h (in the plane in 2D)
+                for (point& p : pts)
+                {
+                    vector d = p - B.centre;
+                    if (twoD_)
+                    {
+                        d.z() = 0;
+                    }
+                    const scalar r = mag(d);
+                    if (r > VSMALL)
+                    {
+                        p -= (min(retraction_*h, 0.5*r)/r)*d;
+                    }
+                }
+            }
         }
         // Each surface point's velocity is the linear least-squares fit
         // of the fluid cells around it outside the body, extrapolated to
@@ -479,7 +511,7 @@ Foam::fictitiousDomain::solve
         forAll(pts, k)
         {
             ball.clear();
-            search_.cellsInBall(pts[k], 2*h, ball);
+            search_.cellsInBall(pts[k], stencilRadius_*h, ball);
             DynamicList<label> st;
             for (const label c : ball)
             {
