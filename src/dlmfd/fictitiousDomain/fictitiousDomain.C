@@ -122,6 +122,23 @@ void applyA
 }
 
 
+//- The inverse diagonal of A, the Jacobi preconditioner
+scalarField inverseDiagonal(const collocationSet& s, const scalar dt)
+{
+    scalarField invDiag(s.points.size());
+    forAll(s.points, k)
+    {
+        scalar d = 0;
+        for (label e = s.rowStart[k]; e < s.rowStart[k + 1]; ++e)
+        {
+            d += sqr(s.rowWeight[e])*s.invVolume[s.rowCell[e]];
+        }
+        invDiag[k] = 1/(dt*d);
+    }
+    return invDiag;
+}
+
+
 //- Jacobi-preconditioned conjugate gradients on A x = b (x starts at 0),
 //- to |r| <= tolerance max(|b|, normFloor): the floor keeps a right-hand
 //- side of round-off size (a fluid already moving with the body) from
@@ -135,6 +152,7 @@ label conjugateGradient
     const scalar tolerance,
     const label maxIterations,
     const scalar normFloor,
+    const scalarField& invDiag,
     vectorField& x,
     scalar& residual
 )
@@ -143,17 +161,6 @@ label conjugateGradient
     x.setSize(n);
     x = Zero;
     vectorField work(s.cells.size());
-
-    scalarField invDiag(n, scalar(0));
-    forAll(s.points, k)
-    {
-        scalar d = 0;
-        for (label e = s.rowStart[k]; e < s.rowStart[k + 1]; ++e)
-        {
-            d += sqr(s.rowWeight[e])*s.invVolume[s.rowCell[e]];
-        }
-        invDiag[k] = 1/(dt*d);
-    }
 
     vectorField r(b);
     scalar normB = 0;
@@ -233,9 +240,9 @@ label conjugateGradient
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::scalar Foam::fictitiousDomain::cellSize(const label celli) const
+Foam::scalar Foam::fictitiousDomain::cellSize(const scalar V) const
 {
-    const scalar V = mesh_.V()[celli];
+    // In 2D the cells are one layer deep: the in-plane size
     if (twoD_)
     {
         return std::sqrt(V/mesh_.bounds().span().z());
@@ -259,7 +266,7 @@ bool Foam::fictitiousDomain::fitWeights
         return false;
     }
     const vectorField& C = mesh_.C();
-    const scalar h = cellSize(cells[0]);
+    const scalar h = cellSize(mesh_.V()[cells[0]]);
 
     List<scalarList> XtX(nCoeff, scalarList(nCoeff, scalar(0)));
     List<scalarList> rows(cells.size(), scalarList(nCoeff));
@@ -458,11 +465,7 @@ Foam::fictitiousDomain::solve
         {
             meanV += V[c];
         }
-        meanV /= near.size();
-        const scalar h =
-            twoD_
-          ? std::sqrt(meanV/mesh_.bounds().span().z())
-          : std::cbrt(meanV);
+        const scalar h = cellSize(meanV/near.size());
 
         near.clear();
         search_.cellsInBall(B.centre, rb + 2*h, near);
@@ -645,6 +648,7 @@ Foam::fictitiousDomain::solve
         }
 
         scalar residual = 0;
+        const scalarField invDiag(inverseDiagonal(s, dt));
         const auto cg = [&]
         (
             const UList<vector>& rhs,
@@ -654,7 +658,8 @@ Foam::fictitiousDomain::solve
         {
             const label it = conjugateGradient
             (
-                s, dt, rhs, tolerance_, maxIterations_, floor, x, residual
+                s, dt, rhs, tolerance_, maxIterations_, floor, invDiag, x,
+                residual
             );
             if (it < 0)
             {
@@ -690,15 +695,15 @@ Foam::fictitiousDomain::solve
                 return a < 3 ? e : (e ^ (s.points[k] - B.centre));
             };
             const label nm = modes.size();
+            List<vectorField> Umodes(nm, vectorField(n));
             List<vectorField> Z(nm);
             forAll(modes, i)
             {
-                vectorField Ua(n);
-                forAll(Ua, k)
+                forAll(Umodes[i], k)
                 {
-                    Ua[k] = inPlane(mode(modes[i], k));
+                    Umodes[i][k] = inPlane(mode(modes[i], k));
                 }
-                cg(Ua, 0, Z[i]);
+                cg(Umodes[i], 0, Z[i]);
             }
 
             // K = C^-1 + U^T Z; C^-1 = diag((m-1) v_p, (m-1) J)/dt
@@ -716,7 +721,7 @@ Foam::fictitiousDomain::solve
                     scalar sum = 0;
                     for (label k = 0; k < n; ++k)
                     {
-                        sum += mode(a, k) & Z[j][k];
+                        sum += Umodes[i][k] & Z[j][k];
                     }
                     K[i][j] = sum;
                     if (a < 3 && c < 3 && a == c)
@@ -730,7 +735,7 @@ Foam::fictitiousDomain::solve
                 }
                 for (label k = 0; k < n; ++k)
                 {
-                    rhs[i] += mode(a, k) & lambda[k];
+                    rhs[i] += Umodes[i][k] & lambda[k];
                 }
             }
             if (!denseSolve(K, rhs))
