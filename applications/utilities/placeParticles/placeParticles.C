@@ -25,7 +25,9 @@ Description
     inside the region's non-periodic faces and the walls and overlaps no
     particle kept before (bounding spheres first, then the true shapes
     through the narrow phase, across periodic boundaries by the minimum
-    image). The count is given, or follows from a target solid fraction of
+    image). A planar shape (circle, polygon: a 2D case) is placed in the
+    domain's mid-plane and turned about z only; its solid fraction is then
+    the area fraction of the plane. The count is given, or follows from a target solid fraction of
     the region. When maxAttempts poses in a row are all rejected the
     utility stops, says how many it placed and the solid fraction reached.
     Random sequential addition jams well below the packings a pour
@@ -81,6 +83,17 @@ quaternion randomRotation(Random& rnd)
             std::sqrt(1 - u1)*std::cos(twoPi*u2),
             std::sqrt(u1)*std::sin(twoPi*u3)
         )
+    );
+}
+
+//- Uniformly random rotation about z (planar shapes in a 2D case)
+quaternion randomRotationAboutZ(Random& rnd)
+{
+    const scalar halfAngle =
+        constant::mathematical::pi*rnd.sample01<scalar>();
+    return quaternion
+    (
+        std::cos(halfAngle), vector(0, 0, std::sin(halfAngle))
     );
 }
 
@@ -147,6 +160,18 @@ int main(int argc, char *argv[])
                 << region.min() << " in every direction" << exit(FatalIOError);
         }
     }
+    // A planar shape (2D case): centres in the domain's mid-plane, turned
+    // about z only; the solid fraction is an area fraction of the plane
+    const bool planar = shape.planar();
+    const scalar zPlane = granular.domain().centre().z();
+    if (planar)
+    {
+        region.min().z() = granular.domain().min().z();
+        region.max().z() = granular.domain().max().z();
+        Info<< "Planar shape: centres at z = " << zPlane
+            << ", turned about z only" << nl;
+    }
+
     const FixedList<bool, 3>& periodic = granular.periodic();
     // Images are taken over the period: along a periodic direction the
     // region must be the whole domain
@@ -269,8 +294,15 @@ int main(int argc, char *argv[])
             const scalar hi = region.max()[d] - margin;
             x[d] = hi > lo ? lo + (hi - lo)*rnd.sample01<scalar>() : 0.5*(lo + hi);
         }
+        if (planar)
+        {
+            // In the mid-plane of the one-cell-deep domain
+            x.z() = zPlane;
+        }
         const quaternion q =
-            randomOrientation ? randomRotation(rnd) : quaternion::I;
+            !randomOrientation ? quaternion::I
+          : planar ? randomRotationAboutZ(rnd)
+          : randomRotation(rnd);
         const tensor R = q.R();
         const posedShape body{shape, x, R};
 
