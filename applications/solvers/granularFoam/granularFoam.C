@@ -91,7 +91,7 @@ int main(int argc, char *argv[])
     granularSystem granular(particleProperties, collisionProperties);
 
     // Walls from the planar patches of a mesh, where asked for
-    if (const dictionary* wp = collisionProperties.findDict("wallPatches"))
+    if (granular.wantsWallPatches())
     {
         Info<< "Reading the mesh for its wall patches" << nl;
         const polyMesh mesh
@@ -104,15 +104,7 @@ int main(int argc, char *argv[])
                 IOobject::MUST_READ
             )
         );
-        granular.addWalls
-        (
-            planeWall::fromPatches
-            (
-                mesh,
-                wp->get<wordRes>("patches"),
-                wp->get<word>("material")
-            )
-        );
+        granular.addWallPatches(mesh);
     }
 
     IOobject gHeader

@@ -85,19 +85,7 @@ Foam::dlmfdCoupling::dlmfdCoupling(const fvMesh& mesh, const vector& g)
     granularSeconds_(0)
 {
     // Walls from the mesh's planar patches, where asked for
-    const IOdictionary collision(constantDict(mesh, "collisionProperties"));
-    if (const dictionary* wp = collision.findDict("wallPatches"))
-    {
-        granular_.addWalls
-        (
-            planeWall::fromPatches
-            (
-                mesh,
-                wp->get<wordRes>("patches"),
-                wp->get<word>("material")
-            )
-        );
-    }
+    granular_.addWallPatches(mesh);
 
     // Gravity acts in the predictor (the fluid carries its own weight in
     // the pressure): the granular corrector has the contacts only
@@ -224,13 +212,14 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
     // (3) Fictitious domain
     const List<fictitiousDomain::result>& res = fd_.solve(U, bodies, dt);
 
-    label nPoints = 0, maxIter = 0;
+    label nPoints = 0, nDropped = 0, maxIter = 0;
     scalar maxError = 0;
     for (label i = 0; i < n; ++i)
     {
         const fictitiousDomain::body& b = bodies[i];
         const fictitiousDomain::result& r = res[i];
         nPoints += r.nInterior + r.nSurface;
+        nDropped += r.nSurfaceDropped;
         maxIter = max(maxIter, r.iterations);
         maxError = max(maxError, r.constraintError);
 
@@ -274,7 +263,8 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
     granularSeconds_ += clock.timeIncrement();
 
     const granularSystem::statistics& s = granular_.stats();
-    Info<< "DLM/FD: " << n << " particles, " << nPoints << " points,"
+    Info<< "DLM/FD: " << n << " particles, " << nPoints << " points ("
+        << nDropped << " surface points without a stencil left out),"
         << " CG iterations <= " << maxIter << ", constraint error "
         << maxError << " m/s; granular " << nSub << " sub-steps, "
         << s.nContacts << " + " << s.nWallContacts << " wall contacts,"

@@ -583,6 +583,7 @@ Foam::fictitiousDomain::solve
             }
             if (st.empty() || !fitWeights(surface[b][k], st, w))
             {
+                ++res.nSurfaceDropped;
                 continue;
             }
             rowStart.append(rowCell.size());

@@ -592,6 +592,23 @@ void Foam::granularSystem::addWalls(const UList<planeWall>& walls)
 }
 
 
+void Foam::granularSystem::addWallPatches(const polyMesh& mesh)
+{
+    if (const dictionary* wp = collisionDict_.findDict("wallPatches"))
+    {
+        addWalls
+        (
+            planeWall::fromPatches
+            (
+                mesh,
+                wp->get<wordRes>("patches"),
+                wp->get<word>("material")
+            )
+        );
+    }
+}
+
+
 Foam::label Foam::granularSystem::shapeIndex
 (
     const word& name,
