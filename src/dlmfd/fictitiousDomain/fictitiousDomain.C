@@ -319,7 +319,7 @@ Foam::fictitiousDomain::fictitiousDomain
     mesh_(mesh),
     surfacePoints_(dict.getOrDefault<Switch>("surfacePoints", true)),
     surfaceSpacing_(dict.getOrDefault<scalar>("surfacePointSpacing", 1)),
-    stencilRadius_(dict.getOrDefault<scalar>("surfaceStencilRadius", 2)),
+    stencilRadius_(dict.getOrDefault<scalar>("surfaceStencilRadius", 1.2)),
     retraction_(dict.getOrDefault<scalar>("surfacePointRetraction", 0)),
     tolerance_(dict.getOrDefault<scalar>("tolerance", 1e-10)),
     maxIterations_(dict.getOrDefault<label>("maxIterations", 1000)),
