@@ -165,7 +165,7 @@ int main(int argc, char *argv[])
     const scalar g = sqr(ug)/(mag(m - 1)*D);
     const scalar nu = ug*D/Ga;
 
-    const fileName file(runTime.constant()/"galileoScales");
+    const fileName file(runTime.path()/runTime.constant()/"galileoScales");
     const fileName tmp(file + ".tmp");
     {
         OFstream os(tmp);
