@@ -146,7 +146,12 @@ TEST(fictitiousDomain, constraintHoldsAndMomentumIsKeptForAnyDensityRatio)
             V[b] = bodies[b].V + res[b].dV;
             omega[b] = bodies[b].omega + res[b].dOmega;
             EXPECT_GT(res[b].nInterior, 100) << "m " << m;
-            EXPECT_GT(res[b].nSurface, 100) << "m " << m;
+            // Surface points imposed, and those left out for want of a
+            // stencil counted (about 40 % of them with the default
+            // 1.2-cell stencil; the two together cover the surface)
+            EXPECT_GT(res[b].nSurface, 50) << "m " << m;
+            EXPECT_GT(res[b].nSurface + res[b].nSurfaceDropped, 100)
+                << "m " << m;
             EXPECT_LT(res[b].constraintError, 1e-9) << "m " << m << " body " << b;
         }
         vector P1, L1;
