@@ -17,6 +17,21 @@ License
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
+//- The collocation points of one body and the interpolation B from its
+//- cells to them (rows in CSR over the body's local cell indices)
+struct Foam::fictitiousDomain::collocationSet
+{
+    labelList cells;
+    List<point> points;
+    label nInterior = 0;
+    labelList rowStart;
+    labelList rowCell;
+    scalarList rowWeight;
+    scalarList invVolume;   // 1/V_c of the local cells
+};
+
+
+
 namespace
 {
 
@@ -74,24 +89,10 @@ bool denseSolve(List<scalarList>& a, scalarList& b)
 }
 
 
-//- The collocation points of one body and the interpolation B from its
-//- cells to them (rows in CSR over the body's local cell indices)
-struct collocationSet
-{
-    labelList cells;
-    List<point> points;
-    label nInterior = 0;
-    labelList rowStart;
-    labelList rowCell;
-    scalarList rowWeight;
-    scalarList invVolume;   // 1/V_c of the local cells
-};
-
-
 //- y = A x = dt B M^-1 B^T x
 void applyA
 (
-    const collocationSet& s,
+    const fictitiousDomain::collocationSet& s,
     const scalar dt,
     const UList<vector>& x,
     vectorField& work,
@@ -123,7 +124,7 @@ void applyA
 
 
 //- The inverse diagonal of A, the Jacobi preconditioner
-scalarField inverseDiagonal(const collocationSet& s, const scalar dt)
+scalarField inverseDiagonal(const fictitiousDomain::collocationSet& s, const scalar dt)
 {
     scalarField invDiag(s.points.size());
     forAll(s.points, k)
@@ -146,7 +147,7 @@ scalarField inverseDiagonal(const collocationSet& s, const scalar dt)
 //- the tolerance was not reached
 label conjugateGradient
 (
-    const collocationSet& s,
+    const fictitiousDomain::collocationSet& s,
     const scalar dt,
     const UList<vector>& b,
     const scalar tolerance,
@@ -388,24 +389,42 @@ Foam::fictitiousDomain::fictitiousDomain
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-const Foam::List<Foam::fictitiousDomain::result>&
-Foam::fictitiousDomain::solve
+void Foam::fictitiousDomain::claim
 (
-    volVectorField& U,
+    const label c,
+    const label b,
+    const scalar d2,
+    const bool inside
+)
+{
+    if (cellOwner_[c] < 0)
+    {
+        touched_.append(c);
+    }
+    const bool wins =
+        cellOwner_[c] < 0
+     || (inside && !ownerInside_[c])
+     || (inside == ownerInside_[c] && d2 < ownerDist2_[c]);
+    if (wins)
+    {
+        cellOwner_[c] = b;
+        ownerDist2_[c] = d2;
+        ownerInside_[c] = inside;
+    }
+}
+
+
+void Foam::fictitiousDomain::findCandidates
+(
     const UList<body>& bodies,
-    const scalar dt
+    candidates& cand
 )
 {
     const vectorField& C = mesh_.C();
     const scalarField& V = mesh_.V();
     const scalar zPlane = twoD_ ? mesh_.bounds().centre().z() : 0;
 
-    // The fluid without the previous multipliers' force
-    vectorField& u = U.primitiveFieldRef();
-    u -= dt*source_.primitiveField();
-    source_.primitiveFieldRef() = Zero;
-
-    // Claims: interior cells, and the surface points with their stencils
+    // The claims of the last step are undone
     for (const label c : touched_)
     {
         cellOwner_[c] = -1;
@@ -413,36 +432,13 @@ Foam::fictitiousDomain::solve
         ownerInside_[c] = false;
     }
     touched_.clear();
-    // A cell inside a body goes to the body it is inside (the one with the
-    // closer centre if inside two); a cell only in surface stencils goes
-    // to the closer centre
-    const auto claim = [&]
-    (
-        const label c,
-        const label b,
-        const scalar d2,
-        const bool inside
-    )
-    {
-        if (cellOwner_[c] < 0)
-        {
-            touched_.append(c);
-        }
-        const bool wins =
-            cellOwner_[c] < 0
-         || (inside && !ownerInside_[c])
-         || (inside == ownerInside_[c] && d2 < ownerDist2_[c]);
-        if (wins)
-        {
-            cellOwner_[c] = b;
-            ownerDist2_[c] = d2;
-            ownerInside_[c] = inside;
-        }
-    };
 
-    List<DynamicList<label>> interior(bodies.size());
-    List<DynamicList<point>> surface(bodies.size());
-    List<List<labelList>> stencils(bodies.size());
+    List<DynamicList<label>>& interior = cand.interior;
+    List<DynamicList<point>>& surface = cand.surface;
+    List<List<labelList>>& stencils = cand.stencils;
+    interior.setSize(bodies.size());
+    surface.setSize(bodies.size());
+    stencils.setSize(bodies.size());
     DynamicList<label> near;
     forAll(bodies, b)
     {
@@ -531,273 +527,322 @@ Foam::fictitiousDomain::solve
         }
         surface[b].transfer(pts);
     }
+}
 
-    results_.setSize(bodies.size());
-    labelList localIndex(mesh_.nCells(), -1);
 
-    forAll(bodies, b)
+void Foam::fictitiousDomain::assemble
+(
+    const label b,
+    const candidates& cand,
+    labelList& localIndex,
+    collocationSet& s,
+    result& res
+) const
+{
+    const vectorField& C = mesh_.C();
+    const scalarField& V = mesh_.V();
+    const List<DynamicList<label>>& interior = cand.interior;
+    const List<DynamicList<point>>& surface = cand.surface;
+    const List<List<labelList>>& stencils = cand.stencils;
+
+    // The body's points and B, with the cells it owns
+    DynamicList<label> cells;
+    DynamicList<point> points;
+    DynamicList<label> rowStart, rowCell;
+    DynamicList<scalar> rowWeight;
+    const auto localOf = [&](const label c)
     {
-        const body& B = bodies[b];
-        result& res = results_[b];
-        res = result();
-
-        // The body's points and B, with the cells it owns
-        collocationSet s;
-        DynamicList<label> cells;
-        DynamicList<point> points;
-        DynamicList<label> rowStart, rowCell;
-        DynamicList<scalar> rowWeight;
-        const auto localOf = [&](const label c)
+        if (localIndex[c] < 0)
         {
-            if (localIndex[c] < 0)
-            {
-                localIndex[c] = cells.size();
-                cells.append(c);
-            }
-            return localIndex[c];
-        };
-        for (const label c : interior[b])
-        {
-            if (cellOwner_[c] != b)
-            {
-                continue;
-            }
-            rowStart.append(rowCell.size());
-            rowCell.append(localOf(c));
-            rowWeight.append(1);
-            points.append(C[c]);
+            localIndex[c] = cells.size();
+            cells.append(c);
         }
-        s.nInterior = points.size();
-
-        DynamicList<label> st;
-        scalarList w;
-        forAll(surface[b], k)
-        {
-            st.clear();
-            for (const label c : stencils[b][k])
-            {
-                if (cellOwner_[c] == b)
-                {
-                    st.append(c);
-                }
-            }
-            if (st.empty() || !fitWeights(surface[b][k], st, w))
-            {
-                ++res.nSurfaceDropped;
-                continue;
-            }
-            rowStart.append(rowCell.size());
-            forAll(st, i)
-            {
-                rowCell.append(localOf(st[i]));
-                rowWeight.append(w[i]);
-            }
-            points.append(surface[b][k]);
-        }
-        rowStart.append(rowCell.size());
-        for (const label c : cells)
-        {
-            localIndex[c] = -1;
-        }
-
-        s.cells.transfer(cells);
-        s.points.transfer(points);
-        s.rowStart.transfer(rowStart);
-        s.rowCell.transfer(rowCell);
-        s.rowWeight.transfer(rowWeight);
-        s.invVolume.setSize(s.cells.size());
-        forAll(s.cells, i)
-        {
-            s.invVolume[i] = 1/V[s.cells[i]];
-        }
-        res.nInterior = s.nInterior;
-        res.interiorCells = SubList<label>(s.cells, s.nInterior);
-        res.nSurface = s.points.size() - s.nInterior;
-        const label n = s.points.size();
-        if (n == 0)
+        return localIndex[c];
+    };
+    for (const label c : interior[b])
+    {
+        if (cellOwner_[c] != b)
         {
             continue;
         }
+        rowStart.append(rowCell.size());
+        rowCell.append(localOf(c));
+        rowWeight.append(1);
+        points.append(C[c]);
+    }
+    s.nInterior = points.size();
 
-        // Right-hand side g = V* + Omega* x r - B u_hat (in-plane in 2D)
-        const auto Bu = [&](const label k, const vectorField& field)
+    DynamicList<label> st;
+    scalarList w;
+    forAll(surface[b], k)
+    {
+        st.clear();
+        for (const label c : stencils[b][k])
         {
-            vector sum(Zero);
-            for (label e = s.rowStart[k]; e < s.rowStart[k + 1]; ++e)
+            if (cellOwner_[c] == b)
             {
-                sum += s.rowWeight[e]*field[s.cells[s.rowCell[e]]];
+                st.append(c);
             }
-            return sum;
-        };
-        const auto inPlane = [&](vector v)
+        }
+        if (st.empty() || !fitWeights(surface[b][k], st, w))
         {
-            if (twoD_)
+            ++res.nSurfaceDropped;
+            continue;
+        }
+        rowStart.append(rowCell.size());
+        forAll(st, i)
+        {
+            rowCell.append(localOf(st[i]));
+            rowWeight.append(w[i]);
+        }
+        points.append(surface[b][k]);
+    }
+    rowStart.append(rowCell.size());
+    for (const label c : cells)
+    {
+        localIndex[c] = -1;
+    }
+
+    s.cells.transfer(cells);
+    s.points.transfer(points);
+    s.rowStart.transfer(rowStart);
+    s.rowCell.transfer(rowCell);
+    s.rowWeight.transfer(rowWeight);
+    s.invVolume.setSize(s.cells.size());
+    forAll(s.cells, i)
+    {
+        s.invVolume[i] = 1/V[s.cells[i]];
+    }
+    res.nInterior = s.nInterior;
+    res.interiorCells = SubList<label>(s.cells, s.nInterior);
+    res.nSurface = s.points.size() - s.nInterior;
+}
+
+
+void Foam::fictitiousDomain::solveBody
+(
+    const label b,
+    const body& B,
+    const collocationSet& s,
+    const scalar dt,
+    vectorField& u,
+    result& res
+)
+{
+    const label n = s.points.size();
+
+    // Right-hand side g = V* + Omega* x r - B u_hat (in-plane in 2D)
+    const auto Bu = [&](const label k, const vectorField& field)
+    {
+        vector sum(Zero);
+        for (label e = s.rowStart[k]; e < s.rowStart[k + 1]; ++e)
+        {
+            sum += s.rowWeight[e]*field[s.cells[s.rowCell[e]]];
+        }
+        return sum;
+    };
+    const auto inPlane = [&](vector v)
+    {
+        if (twoD_)
+        {
+            v.z() = 0;
+        }
+        return v;
+    };
+    vectorField g(n);
+    scalar velocityScale2 = 0;
+    forAll(g, k)
+    {
+        const vector r = s.points[k] - B.centre;
+        const vector rigid = B.V + (B.omega ^ r);
+        const vector fluid = Bu(k, u);
+        g[k] = inPlane(rigid - fluid);
+        velocityScale2 += max(magSqr(rigid), magSqr(fluid));
+    }
+
+    scalar residual = 0;
+    const scalarField invDiag(inverseDiagonal(s, dt));
+    const auto cg = [&]
+    (
+        const UList<vector>& rhs,
+        const scalar floor,
+        vectorField& x
+    )
+    {
+        const label it = conjugateGradient
+        (
+            s, dt, rhs, tolerance_, maxIterations_, floor, invDiag, x,
+            residual
+        );
+        if (it < 0)
+        {
+            FatalErrorInFunction
+                << "particle " << b << ": the fictitious-domain CG did"
+                << " not reach the tolerance " << tolerance_ << " in "
+                << maxIterations_ << " iterations (residual "
+                << residual << "); raise maxIterations or tolerance"
+                << " in constant/dlmfdProperties" << exit(FatalError);
+        }
+        res.iterations = max(res.iterations, it);
+    };
+
+    // The multipliers for the velocities as they are; the tolerance is
+    // relative to the velocities at the points, not to their
+    // difference from the rigid motion
+    vectorField lambda;
+    cg(g, std::sqrt(velocityScale2), lambda);
+
+    vector w_V(Zero), w_Omega(Zero);
+    if (B.free)
+    {
+        // The rigid modes: translations e_a, rotations e_a x r;
+        // in 2D only x, y and the rotation about z
+        const labelList modes
+        (
+            twoD_ ? labelList{0, 1, 5} : labelList{0, 1, 2, 3, 4, 5}
+        );
+        const auto mode = [&](const label a, const label k)
+        {
+            vector e(Zero);
+            e[a % 3] = 1;
+            return a < 3 ? e : (e ^ (s.points[k] - B.centre));
+        };
+        const label nm = modes.size();
+        List<vectorField> Umodes(nm, vectorField(n));
+        List<vectorField> Z(nm);
+        forAll(modes, i)
+        {
+            forAll(Umodes[i], k)
             {
-                v.z() = 0;
+                Umodes[i][k] = inPlane(mode(modes[i], k));
             }
-            return v;
-        };
-        vectorField g(n);
-        scalar velocityScale2 = 0;
-        forAll(g, k)
-        {
-            const vector r = s.points[k] - B.centre;
-            const vector rigid = B.V + (B.omega ^ r);
-            const vector fluid = Bu(k, u);
-            g[k] = inPlane(rigid - fluid);
-            velocityScale2 += max(magSqr(rigid), magSqr(fluid));
+            cg(Umodes[i], 0, Z[i]);
         }
 
-        scalar residual = 0;
-        const scalarField invDiag(inverseDiagonal(s, dt));
-        const auto cg = [&]
-        (
-            const UList<vector>& rhs,
-            const scalar floor,
-            vectorField& x
-        )
+        // K = C^-1 + U^T Z; C^-1 = diag((m-1) v_p, (m-1) J)/dt
+        const scalar vp = B.shape->volume();
+        const tensor J =
+            B.R & B.shape->volumeInertia() & B.R.T();
+        List<scalarList> K(nm, scalarList(nm, scalar(0)));
+        scalarList rhs(nm, scalar(0));
+        forAll(modes, i)
         {
-            const label it = conjugateGradient
-            (
-                s, dt, rhs, tolerance_, maxIterations_, floor, invDiag, x,
-                residual
-            );
-            if (it < 0)
+            const label a = modes[i];
+            forAll(modes, j)
             {
-                FatalErrorInFunction
-                    << "particle " << b << ": the fictitious-domain CG did"
-                    << " not reach the tolerance " << tolerance_ << " in "
-                    << maxIterations_ << " iterations (residual "
-                    << residual << "); raise maxIterations or tolerance"
-                    << " in constant/dlmfdProperties" << exit(FatalError);
-            }
-            res.iterations = max(res.iterations, it);
-        };
-
-        // The multipliers for the velocities as they are; the tolerance is
-        // relative to the velocities at the points, not to their
-        // difference from the rigid motion
-        vectorField lambda;
-        cg(g, std::sqrt(velocityScale2), lambda);
-
-        vector w_V(Zero), w_Omega(Zero);
-        if (B.free)
-        {
-            // The rigid modes: translations e_a, rotations e_a x r;
-            // in 2D only x, y and the rotation about z
-            const labelList modes
-            (
-                twoD_ ? labelList{0, 1, 5} : labelList{0, 1, 2, 3, 4, 5}
-            );
-            const auto mode = [&](const label a, const label k)
-            {
-                vector e(Zero);
-                e[a % 3] = 1;
-                return a < 3 ? e : (e ^ (s.points[k] - B.centre));
-            };
-            const label nm = modes.size();
-            List<vectorField> Umodes(nm, vectorField(n));
-            List<vectorField> Z(nm);
-            forAll(modes, i)
-            {
-                forAll(Umodes[i], k)
-                {
-                    Umodes[i][k] = inPlane(mode(modes[i], k));
-                }
-                cg(Umodes[i], 0, Z[i]);
-            }
-
-            // K = C^-1 + U^T Z; C^-1 = diag((m-1) v_p, (m-1) J)/dt
-            const scalar vp = B.shape->volume();
-            const tensor J =
-                B.R & B.shape->volumeInertia() & B.R.T();
-            List<scalarList> K(nm, scalarList(nm, scalar(0)));
-            scalarList rhs(nm, scalar(0));
-            forAll(modes, i)
-            {
-                const label a = modes[i];
-                forAll(modes, j)
-                {
-                    const label c = modes[j];
-                    scalar sum = 0;
-                    for (label k = 0; k < n; ++k)
-                    {
-                        sum += Umodes[i][k] & Z[j][k];
-                    }
-                    K[i][j] = sum;
-                    if (a < 3 && c < 3 && a == c)
-                    {
-                        K[i][j] += B.excessDensity*vp/dt;
-                    }
-                    else if (a >= 3 && c >= 3)
-                    {
-                        K[i][j] += B.excessDensity*J(a - 3, c - 3)/dt;
-                    }
-                }
+                const label c = modes[j];
+                scalar sum = 0;
                 for (label k = 0; k < n; ++k)
                 {
-                    rhs[i] += Umodes[i][k] & lambda[k];
+                    sum += Umodes[i][k] & Z[j][k];
+                }
+                K[i][j] = sum;
+                if (a < 3 && c < 3 && a == c)
+                {
+                    K[i][j] += B.excessDensity*vp/dt;
+                }
+                else if (a >= 3 && c >= 3)
+                {
+                    K[i][j] += B.excessDensity*J(a - 3, c - 3)/dt;
                 }
             }
-            if (!denseSolve(K, rhs))
+            for (label k = 0; k < n; ++k)
             {
-                FatalErrorInFunction
-                    << "particle " << b << ": the rigid-mode system of the"
-                    << " fictitious-domain step is singular (m = "
-                    << 1 + B.excessDensity << ", " << n << " points);"
-                    << " the particle needs m > 0 and cells inside it"
-                    << exit(FatalError);
-            }
-            forAll(modes, i)
-            {
-                const label a = modes[i];
-                forAll(lambda, k)
-                {
-                    lambda[k] -= rhs[i]*Z[i][k];
-                }
-                if (a < 3)
-                {
-                    w_V[a] = rhs[i];
-                }
-                else
-                {
-                    w_Omega[a - 3] = rhs[i];
-                }
+                rhs[i] += Umodes[i][k] & lambda[k];
             }
         }
-        res.dV = -w_V;
-        res.dOmega = -w_Omega;
+        if (!denseSolve(K, rhs))
+        {
+            FatalErrorInFunction
+                << "particle " << b << ": the rigid-mode system of the"
+                << " fictitious-domain step is singular (m = "
+                << 1 + B.excessDensity << ", " << n << " points);"
+                << " the particle needs m > 0 and cells inside it"
+                << exit(FatalError);
+        }
+        forAll(modes, i)
+        {
+            const label a = modes[i];
+            forAll(lambda, k)
+            {
+                lambda[k] -= rhs[i]*Z[i][k];
+            }
+            if (a < 3)
+            {
+                w_V[a] = rhs[i];
+            }
+            else
+            {
+                w_Omega[a - 3] = rhs[i];
+            }
+        }
+    }
+    res.dV = -w_V;
+    res.dOmega = -w_Omega;
 
-        // The fluid in the body's cells, and the new force density
-        vectorField spread(s.cells.size(), Zero);
-        forAll(s.points, k)
+    // The fluid in the body's cells, and the new force density
+    vectorField spread(s.cells.size(), Zero);
+    forAll(s.points, k)
+    {
+        for (label e = s.rowStart[k]; e < s.rowStart[k + 1]; ++e)
         {
-            for (label e = s.rowStart[k]; e < s.rowStart[k + 1]; ++e)
-            {
-                spread[s.rowCell[e]] += s.rowWeight[e]*lambda[k];
-            }
-            res.sumLambda += lambda[k];
-            res.sumMoment += (s.points[k] - B.centre) ^ lambda[k];
+            spread[s.rowCell[e]] += s.rowWeight[e]*lambda[k];
         }
-        forAll(s.cells, i)
-        {
-            const label c = s.cells[i];
-            const vector f = spread[i]*s.invVolume[i];
-            source_.primitiveFieldRef()[c] = f;
-            u[c] += dt*f;
-        }
+        res.sumLambda += lambda[k];
+        res.sumMoment += (s.points[k] - B.centre) ^ lambda[k];
+    }
+    forAll(s.cells, i)
+    {
+        const label c = s.cells[i];
+        const vector f = spread[i]*s.invVolume[i];
+        source_.primitiveFieldRef()[c] = f;
+        u[c] += dt*f;
+    }
 
-        // What is left of the constraint
-        const vector Vnew = B.V - w_V;
-        const vector omegaNew = B.omega - w_Omega;
-        forAll(s.points, k)
+    // What is left of the constraint
+    const vector Vnew = B.V - w_V;
+    const vector omegaNew = B.omega - w_Omega;
+    forAll(s.points, k)
+    {
+        const vector r = s.points[k] - B.centre;
+        res.constraintError = max
+        (
+            res.constraintError,
+            mag(inPlane(Bu(k, u) - (Vnew + (omegaNew ^ r))))
+        );
+    }
+}
+
+
+const Foam::List<Foam::fictitiousDomain::result>&
+Foam::fictitiousDomain::solve
+(
+    volVectorField& U,
+    const UList<body>& bodies,
+    const scalar dt
+)
+{
+    // The fluid without the previous multipliers' force
+    vectorField& u = U.primitiveFieldRef();
+    u -= dt*source_.primitiveField();
+    source_.primitiveFieldRef() = Zero;
+
+    // Every body's candidate points, and the cells shared out
+    candidates cand;
+    findCandidates(bodies, cand);
+
+    // Each body's problem on the cells it owns
+    results_.setSize(bodies.size());
+    labelList localIndex(mesh_.nCells(), -1);
+    forAll(bodies, b)
+    {
+        result& res = results_[b];
+        res = result();
+        collocationSet s;
+        assemble(b, cand, localIndex, s, res);
+        if (s.points.size())
         {
-            const vector r = s.points[k] - B.centre;
-            res.constraintError = max
-            (
-                res.constraintError,
-                mag(inPlane(Bu(k, u) - (Vnew + (omegaNew ^ r))))
-            );
+            solveBody(b, bodies[b], s, dt, u, res);
         }
     }
 
@@ -805,6 +850,5 @@ Foam::fictitiousDomain::solve
     source_.correctBoundaryConditions();
     return results_;
 }
-
 
 // ************************************************************************* //
