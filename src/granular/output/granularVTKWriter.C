@@ -17,6 +17,8 @@ Description
 #include "granularVTKWriter.H"
 #include "sphere.H"
 #include "convexPolyhedron.H"
+#include "circle.H"
+#include "mathematicalConstants.H"
 #include "OFstream.H"
 #include "IFstream.H"
 #include "OSspecific.H"
@@ -218,10 +220,58 @@ void Foam::granularVTKWriter::write
             sphereOmega.append(p.omega());
             continue;
         }
+        if (const auto* c = isA<particleShapes::circle>(p.shape()))
+        {
+            // A 2D disc: drawn as a prism of nSides sides, one cell deep,
+            // with the polyhedra (its rotation shows on the side faces)
+            const label nSides = 36;
+            const tensor R = p.R();
+            const label start = points.size();
+            for (label k = 0; k < 2*nSides; ++k)
+            {
+                const scalar a =
+                    constant::mathematical::twoPi*(k % nSides)/nSides;
+                const vector v
+                (
+                    c->radius()*std::cos(a),
+                    c->radius()*std::sin(a),
+                    (k < nSides ? -0.5 : 0.5)*c->depth()
+                );
+                points.append(p.position() + (R & v));
+            }
+            const auto addFace = [&](const labelList& f)
+            {
+                for (const label v : f)
+                {
+                    connectivity.append(start + v);
+                }
+                offsets.append(connectivity.size());
+                faceIds.append(system.id(i));
+                faceU.append(p.velocity());
+                faceOmega.append(p.omega());
+            };
+            labelList bottom(nSides), top(nSides);
+            for (label k = 0; k < nSides; ++k)
+            {
+                bottom[k] = nSides - 1 - k;
+                top[k] = nSides + k;
+            }
+            addFace(bottom);
+            addFace(top);
+            for (label k = 0; k < nSides; ++k)
+            {
+                const label k1 = (k + 1) % nSides;
+                addFace(labelList({k, k1, nSides + k1, nSides + k}));
+            }
+            continue;
+        }
         const auto* poly = isA<particleShapes::convexPolyhedron>(p.shape());
         if (!poly)
         {
-            continue;
+            FatalErrorInFunction
+                << "particle " << system.id(i) << ": shape "
+                << p.shape().type() << " has no VTK form"
+                << exit(FatalError);
         }
         const tensor R = p.R();
         const label start = points.size();
