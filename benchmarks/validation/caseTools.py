@@ -1,0 +1,62 @@
+"""Helpers shared by the validation scripts that build their cases from a
+tutorial: editing a dictionary in place, and the graded mesh of a settling
+column (uniform around the vertical axis, growing towards the side walls).
+"""
+import re
+import sys
+
+
+def sub(path, pattern, repl):
+    """Replace the one match of pattern in the file at path; stop if the
+    pattern is found zero or several times (the tutorial changed)"""
+    text = open(path).read()
+    new, n = re.subn(pattern, repl, text, flags=re.M | re.S)
+    if n != 1:
+        sys.exit(f"{path}: pattern {pattern!r} found {n} times")
+    open(path, "w").write(new)
+
+
+def growth(L, dx, n):
+    """Ratio last/first cell of n cells growing geometrically from dx to
+    fill length L"""
+    lo, hi = 1.0, 3.0
+    for _ in range(200):
+        q = 0.5 * (lo + hi)
+        if dx * (q**n - 1) / (q - 1) > L:
+            hi = q
+        else:
+            lo = q
+    return q**(n - 1)
+
+
+def column_mesh(blockMeshDict, collisionProperties, N, W, H, core):
+    """A closed box x, y in [-W, W], z in [0, H] (units of D): uniform at
+    D/dx = N in the column |x|, |y| <= core along the whole height, graded
+    geometrically outside it. Rewrites the tutorial's blockMeshDict (from its
+    comment line "// A box" to "boundary") and the granular domain of its
+    collisionProperties; returns the number of cells"""
+    dx = 1.0 / N
+    side = W - core
+    nSide = max(6, round(side / (4 * dx) ** 0.5 * 1.5))
+    nCore = round(2 * core * N)
+    r = growth(side, dx, nSide)
+    n = 2 * nSide + nCore
+    g = (f"(({side / (2 * W)!r} {nSide / n!r} {1 / r!r}) ({2 * core / (2 * W)!r} {nCore / n!r} 1) "
+         f"({side / (2 * W)!r} {nSide / n!r} {r!r}))")
+    nz = round(H * N)
+    sub(blockMeshDict, r"^// A box.*?^boundary",
+        f"""vertices
+(
+    (-{W} -{W} 0) ({W} -{W} 0) ({W} {W} 0) (-{W} {W} 0)
+    (-{W} -{W} {H}) ({W} -{W} {H}) ({W} {W} {H}) (-{W} {W} {H})
+);
+
+blocks
+(
+    hex (0 1 2 3 4 5 6 7) ({n} {n} {nz}) simpleGrading ({g} {g} 1)
+);
+
+boundary""")
+    sub(collisionProperties, r"min\s+\([^)]*\);", f"min     (-{W} -{W} 0);")
+    sub(collisionProperties, r"max\s+\([^)]*\);", f"max     ({W} {W} {H});")
+    return n * n * nz
