@@ -270,3 +270,108 @@ TEST(fictitiousDomain, cellClaimedByTwoParticlesGoesToTheCloserCentre)
 
 
 // ************************************************************************* //
+
+
+TEST(fictitiousDomain, bodyAcrossPeriodicBoundariesActsAsInAnOpenBox)
+{
+    // A cube straddling the corner of a periodic unit box (24^3 cells) and
+    // the same cube in the middle of a box of twice the size (48^3 cells,
+    // the same cells repeated, not periodic), in the same periodic velocity
+    // field: the same points, the same multipliers, the same velocity
+    // changes, and in the periodic box the fluid's momentum plus the
+    // body's is kept
+    particleShapes::platonicSolid cube("cube", "cube", 0.25);
+    fictitiousDomain::body B;
+    B.shape = &cube;
+    B.R = quaternion(normalised(vector(1, 2, 3)), 0.7).R();
+    B.V = vector(0.01, -0.02, 0.03);
+    B.omega = vector(0.5, 0, -0.2);
+    B.excessDensity = 1;
+    const point corner(0.02, 0.97, 0.05);
+    dictionary dict;
+
+    fictitiousDomain::result open;
+    {
+        test::foamTestCase tc;
+        const fvMesh& mesh = tc.makeBoxMesh(48, 48, 48, 2*vector::one);
+        tmp<volVectorField> tU = makeU(mesh);
+        List<fictitiousDomain::body> bodies(1, B);
+        bodies[0].centre = corner + vector(1, 0, 1);
+        fictitiousDomain fd(mesh, dict);
+        open = fd.solve(tU.ref(), bodies, 0.01)[0];
+    }
+
+    test::foamTestCase tc;
+    const fvMesh& mesh = tc.makeBoxMesh(24, 24, 24, vector::one);
+    tmp<volVectorField> tU = makeU(mesh);
+    List<fictitiousDomain::body> bodies(1, B);
+    bodies[0].centre = corner;
+    fictitiousDomain fd(mesh, dict);
+    fd.setPeriodicity(vector::one);
+    vector P0(Zero);
+    forAll(mesh.C(), c)
+    {
+        P0 += mesh.V()[c]*tU()[c];
+    }
+    P0 += B.excessDensity*cube.volume()*B.V;
+    const fictitiousDomain::result r = fd.solve(tU.ref(), bodies, 0.01)[0];
+    vector P1(Zero);
+    forAll(mesh.C(), c)
+    {
+        P1 += mesh.V()[c]*tU()[c];
+    }
+    P1 += B.excessDensity*cube.volume()*(B.V + r.dV);
+
+    Info<< "periodic corner: " << r.nInterior << " interior, "
+        << r.nSurface << " surface points (open box " << open.nInterior
+        << ", " << open.nSurface << "); dV " << r.dV << " against "
+        << open.dV << "; momentum change " << mag(P1 - P0) << endl;
+    EXPECT_GT(r.nInterior, 100);
+    EXPECT_EQ(r.nInterior, open.nInterior);
+    EXPECT_EQ(r.nSurface, open.nSurface);
+    EXPECT_EQ(r.nSurfaceDropped, open.nSurfaceDropped);
+    EXPECT_LT(mag(r.dV - open.dV), 1e-9*mag(open.dV));
+    EXPECT_LT(mag(r.dOmega - open.dOmega), 1e-9*mag(open.dOmega));
+    EXPECT_LT(mag(r.sumLambda - open.sumLambda), 1e-9*mag(open.sumLambda));
+    EXPECT_LT(mag(r.sumMoment - open.sumMoment), 1e-9*mag(open.sumMoment));
+    EXPECT_LT(r.constraintError, 1e-9);
+    EXPECT_LT(mag(P1 - P0), 1e-12*mag(P0));
+
+    // Cells of the body on the far sides of the box carry their centres
+    // where they sit relative to it
+    label shifted = 0;
+    forAll(r.interiorCells, i)
+    {
+        const vector s = r.interiorCentres[i] - mesh.C()[r.interiorCells[i]];
+        EXPECT_LT(mag(s - vector(round(s.x()), round(s.y()), round(s.z()))), 1e-12);
+        shifted += mag(s) > 0.5;
+    }
+    EXPECT_GT(shifted, 10);
+}
+
+
+TEST(fictitiousDomain, bodyLongerThanHalfThePeriodIsRefused)
+{
+    test::foamTestCase tc;
+    const fvMesh& mesh = tc.makeBoxMesh(12, 12, 12, vector::one);
+    tmp<volVectorField> tU = makeU(mesh);
+    particleShapes::sphere ball("ball", 0.9);
+    List<fictitiousDomain::body> bodies(1);
+    bodies[0].shape = &ball;
+    bodies[0].centre = point(0.5, 0.5, 0.5);
+    bodies[0].excessDensity = 1;
+    dictionary dict;
+    fictitiousDomain fd(mesh, dict);
+    fd.setPeriodicity(vector(1, 0, 0));
+    try
+    {
+        fd.solve(tU.ref(), bodies, 0.01);
+        FAIL() << "a body wider than half the period was accepted";
+    }
+    catch (const Foam::error& e)
+    {
+        const std::string msg = e.message();
+        EXPECT_NE(msg.find("particle 0"), std::string::npos) << msg;
+        EXPECT_NE(msg.find("half the period"), std::string::npos) << msg;
+    }
+}

@@ -140,18 +140,26 @@ int main(int argc, char *argv[])
         runTime.printExecutionTime(Info);
     }
 
-    // The cost by phase (communication is inside the fluid solves here:
-    // the particle phases run without any)
+    // The cost by phase, on the master: the fluid's own communication is
+    // inside the fluid solves; that of the particles (cells and forces
+    // exchanged, state broadcast, with the waiting it includes) apart
     const scalar fdSeconds =
         particles.valid() ? particles->fictitiousDomainSeconds() : 0;
     const scalar granularSeconds =
         particles.valid() ? particles->granularSeconds() : 0;
-    const scalar total =
-        max(fluidSeconds + fdSeconds + granularSeconds + outputSeconds, SMALL);
+    const scalar commSeconds =
+        particles.valid() ? particles->communicationSeconds() : 0;
+    const scalar total = max
+    (
+        fluidSeconds + fdSeconds + granularSeconds + commSeconds
+      + outputSeconds,
+        SMALL
+    );
     Info<< "Cost (wall clock): fluid " << fluidSeconds << " s ("
         << 100*fluidSeconds/total << " %), DLM/FD " << fdSeconds << " s ("
         << 100*fdSeconds/total << " %), granular " << granularSeconds
-        << " s (" << 100*granularSeconds/total << " %), output "
+        << " s (" << 100*granularSeconds/total << " %), communication "
+        << commSeconds << " s (" << 100*commSeconds/total << " %), output "
         << outputSeconds << " s (" << 100*outputSeconds/total << " %)"
         << nl << endl;
 

@@ -15,6 +15,9 @@ License
 #include "granularInput.H"
 #include "planeWall.H"
 #include "Time.H"
+#include "cyclicPolyPatch.H"
+#include "processorCyclicPolyPatch.H"
+#include "IFstream.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -53,6 +56,165 @@ Foam::tensor Foam::dlmfdCoupling::volumeInertia(const label i) const
 }
 
 
+void Foam::dlmfdCoupling::setPeriodicity()
+{
+    // The directions the mesh's cyclic patches join (by their faces'
+    // normals: a decomposed cyclic lives on as processorCyclic patches),
+    // with their separations where this rank holds both sides
+    vector across(Zero), separation(Zero);
+    for (const polyPatch& pp : mesh_.boundaryMesh())
+    {
+        const coupledPolyPatch* cyc = nullptr;
+        if (isA<processorCyclicPolyPatch>(pp))
+        {
+            cyc = &refCast<const processorCyclicPolyPatch>(pp);
+        }
+        else if (isA<cyclicPolyPatch>(pp))
+        {
+            cyc = &refCast<const cyclicPolyPatch>(pp);
+            if (!cyc->separated() && pp.size() && !cyc->parallel())
+            {
+                FatalErrorInFunction
+                    << "cyclic patch " << pp.name() << " is a rotation;"
+                    << " the particles know only periodic boxes"
+                    << " (translational cyclics)" << exit(FatalError);
+            }
+            if (cyc->separated() && cyc->separation().size())
+            {
+                separation = max(separation, cmptMag(cyc->separation()[0]));
+            }
+        }
+        if (!cyc)
+        {
+            continue;
+        }
+        for (const vector& Sf : pp.faceAreas())
+        {
+            across = max(across, cmptMag(Sf/mag(Sf)));
+        }
+    }
+    reduce(across, maxOp<vector>());
+    reduce(separation, maxOp<vector>());
+    const vector meshSpan = mesh_.bounds().span();
+
+    const FixedList<bool, 3>& periodic = granular_.periodic();
+    const vector span = granular_.domain().span();
+    vector period(Zero);
+    const char* names[] = {"x", "y", "z"};
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        const bool meshPeriodic = across[d] > 0.99;
+        if (meshPeriodic != periodic[d])
+        {
+            FatalErrorInFunction
+                << "direction " << names[d] << " is "
+                << (periodic[d] ? "" : "not ") << "periodic in"
+                << " constant/collisionProperties (domain periodic "
+                << periodic << ") but the mesh has "
+                << (meshPeriodic ? "" : "no ") << "cyclic patches across"
+                << " it; make both periodic, or neither"
+                << exit(FatalError);
+        }
+        if (periodic[d])
+        {
+            const scalar meshPeriod =
+                separation[d] > 0 ? separation[d] : meshSpan[d];
+            if (mag(meshPeriod - span[d]) > 1e-9*mag(span))
+            {
+                FatalErrorInFunction
+                    << "direction " << names[d] << ": the mesh's cyclic"
+                    << " patches have period " << meshPeriod << " m but"
+                    << " the domain of constant/collisionProperties spans "
+                    << span[d] << " m; they must be the same"
+                    << exit(FatalError);
+            }
+            period[d] = span[d];
+        }
+    }
+    fd_.setPeriodicity(period);
+}
+
+
+Foam::fileName Foam::dlmfdCoupling::readParticles()
+{
+    // Written by the solver (processor0's in parallel), else the case's
+    // own, by hand or by placeParticles
+    const Time& runTime = mesh_.time();
+    const fileName written(runTime.timePath()/"uniform"/"particles");
+    const fileName given
+    (
+        runTime.globalPath()/runTime.timeName()/"particles"
+    );
+    fileName file;
+    dictionary dict;
+    if (Pstream::master())
+    {
+        file = isFile(written) ? written : given;
+        if (!isFile(file))
+        {
+            FatalErrorInFunction
+                << "no particle file " << written << " nor " << given << nl
+                << "    Place particles with placeParticles, or copy them"
+                << " from 0.orig" << exit(FatalError);
+        }
+        IFstream ifs(file);
+        if (!ifs.good())
+        {
+            FatalErrorInFunction
+                << "cannot open the particle file " << file
+                << exit(FatalError);
+        }
+        dict.read(ifs);
+    }
+    Pstream::scatter(file);
+    Pstream::scatter(dict);
+    granular_.readParticles(dict, file);
+    return file;
+}
+
+
+void Foam::dlmfdCoupling::broadcastState()
+{
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+    constexpr label nValues = 13;
+    const label n = granular_.size();
+    scalarList state(nValues*n);
+    if (Pstream::master())
+    {
+        for (label i = 0; i < n; ++i)
+        {
+            const rigidParticle& p = granular_.particle(i);
+            scalar* v = &state[nValues*i];
+            const quaternion& q = p.orientation();
+            for (direction d = 0; d < vector::nComponents; ++d)
+            {
+                v[d] = p.position()[d];
+                v[3 + d] = q.v()[d];
+                v[7 + d] = p.velocity()[d];
+                v[10 + d] = p.omega()[d];
+            }
+            v[6] = q.w();
+        }
+    }
+    Pstream::scatter(state);
+    if (!Pstream::master())
+    {
+        for (label i = 0; i < n; ++i)
+        {
+            rigidParticle& p = granular_.particle(i);
+            const scalar* v = &state[nValues*i];
+            p.setPosition(point(v[0], v[1], v[2]));
+            p.restoreOrientation(quaternion(v[6], vector(v[3], v[4], v[5])));
+            p.setVelocity(vector(v[7], v[8], v[9]));
+            p.setOmega(vector(v[10], v[11], v[12]));
+        }
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::dlmfdCoupling::dlmfdCoupling(const fvMesh& mesh, const vector& g)
@@ -80,8 +242,9 @@ Foam::dlmfdCoupling::dlmfdCoupling(const fvMesh& mesh, const vector& g)
     Fh_(),
     Th_(),
     series_(),
-    vtk_(mesh.time().path()/"VTK", mesh.time().value()),
+    vtk_(mesh.time().globalPath()/"VTK", mesh.time().value()),
     fdSeconds_(0),
+    commSeconds_(0),
     granularSeconds_(0)
 {
     // Walls from the mesh's planar patches, where asked for
@@ -91,15 +254,10 @@ Foam::dlmfdCoupling::dlmfdCoupling(const fvMesh& mesh, const vector& g)
     // the pressure): the granular corrector has the contacts only
     granular_.setGravity(Zero);
 
-    const fileName particleFile(mesh.time().timePath()/"particles");
-    if (!isFile(particleFile))
-    {
-        FatalErrorInFunction
-            << "no particle file " << particleFile << nl
-            << "    Place particles with placeParticles, or copy them from"
-            << " 0.orig" << exit(FatalError);
-    }
-    granular_.readParticles(particleFile);
+    // Periodic directions, as the mesh's cyclics and the domain say
+    setPeriodicity();
+
+    const fileName particleFile(readParticles());
     Fh_.setSize(granular_.size(), Zero);
     Th_.setSize(granular_.size(), Zero);
 
@@ -143,13 +301,16 @@ Foam::dlmfdCoupling::dlmfdCoupling(const fvMesh& mesh, const vector& g)
     }
     Info<< "    walls " << granular_.walls().size() << ", contact law "
         << "sub-step T_c/N = " << granular_.maxSubStep() << " s" << nl
-        << endl;
+        << "    periods " << fd_.period() << " m (0: not periodic); "
+        << (Pstream::parRun() ? "granular step on the master of " : "")
+        << (Pstream::parRun() ? Foam::name(Pstream::nProcs()) + " ranks" : "serial")
+        << nl << endl;
 
     if (Pstream::master())
     {
         const fileName dir
         (
-            mesh.time().path()/"postProcessing"/"dlmfdParticles"
+            mesh.time().globalPath()/"postProcessing"/"dlmfdParticles"
            /mesh.time().timeName()
         );
         mkDir(dir);
@@ -159,7 +320,7 @@ Foam::dlmfdCoupling::dlmfdCoupling(const fvMesh& mesh, const vector& g)
             << "# time id x y z qw qx qy qz Ux Uy Uz omegax omegay omegaz"
             << " Fhx Fhy Fhz Thx Thy Thz  (SI units, world frame)" << nl;
     }
-    if (mesh.time().timeIndex() == 0)
+    if (mesh.time().timeIndex() == 0 && Pstream::master())
     {
         vtk_.write(granular_, mesh.time().value(), 0);
     }
@@ -209,44 +370,67 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
         b.centre = p.position() + dt*b.V;
     }
 
-    // (3) Fictitious domain
+    // (3) Fictitious domain, distributed; its results on the master
+    const scalar commBefore = fd_.communicationSeconds();
     const List<fictitiousDomain::result>& res = fd_.solve(U, bodies, dt);
+    const scalar fdComm = fd_.communicationSeconds() - commBefore;
+    fdSeconds_ += clock.timeIncrement() - fdComm;
+    commSeconds_ += fdComm;
 
-    label nPoints = 0, nDropped = 0, maxIter = 0;
+    // (4) On the master: forces, torques and the granular corrector,
+    // contacts from X^n over dt
+    label nPoints = 0, nDropped = 0, maxIter = 0, nSub = 0;
     scalar maxError = 0;
-    for (label i = 0; i < n; ++i)
+    if (Pstream::master())
     {
-        const fictitiousDomain::body& b = bodies[i];
-        const fictitiousDomain::result& r = res[i];
-        nPoints += r.nInterior + r.nSurface;
-        nDropped += r.nSurfaceDropped;
-        maxIter = max(maxIter, r.iterations);
-        maxError = max(maxError, r.constraintError);
-
-        const vector V3 = b.V + r.dV;
-        const vector omega3 = b.omega + r.dOmega;
-        const scalar vp = b.shape->volume();
-        Fh_[i] = rhoFluid_*(vp*(V3 - V0[i])/dt - r.sumLambda);
-        Th_[i] =
-            rhoFluid_
-           *((volumeInertia(i) & (omega3 - omega0[i]))/dt - r.sumMoment);
-
-        if (b.free)
+        for (label i = 0; i < n; ++i)
         {
-            rigidParticle& p = granular_.particle(i);
-            p.setVelocity(V3);
-            p.setOmega(omega3);
+            const fictitiousDomain::body& b = bodies[i];
+            const fictitiousDomain::result& r = res[i];
+            nPoints += r.nInterior + r.nSurface;
+            nDropped += r.nSurfaceDropped;
+            maxIter = max(maxIter, r.iterations);
+            maxError = max(maxError, r.constraintError);
+
+            const vector V3 = b.V + r.dV;
+            const vector omega3 = b.omega + r.dOmega;
+            const scalar vp = b.shape->volume();
+            Fh_[i] = rhoFluid_*(vp*(V3 - V0[i])/dt - r.sumLambda);
+            Th_[i] =
+                rhoFluid_
+               *((volumeInertia(i) & (omega3 - omega0[i]))/dt - r.sumMoment);
+
+            if (b.free)
+            {
+                rigidParticle& p = granular_.particle(i);
+                p.setVelocity(V3);
+                p.setOmega(omega3);
+            }
         }
+        nSub = granular_.evolve(dt);
     }
+    granularSeconds_ += clock.timeIncrement();
 
-    fdSeconds_ += clock.timeIncrement();
+    // The new state to every rank
+    broadcastState();
+    commSeconds_ += clock.timeIncrement();
 
-    // (4) Granular corrector: contacts from X^n over dt
-    const label nSub = granular_.evolve(dt);
-
-    // The fluid carried by each free particle moves with it
+    // The fluid carried by each free particle moves with it: its interior
+    // cells, at their centres relative to the body at X*, which moved by
+    // X^{n+1} - X* (less than half a period, however it was wrapped)
+    const auto minimumImage = [&](vector d)
+    {
+        const vector& L = fd_.period();
+        for (direction k = 0; k < vector::nComponents; ++k)
+        {
+            if (L[k] > 0)
+            {
+                d[k] -= L[k]*std::round(d[k]/L[k]);
+            }
+        }
+        return d;
+    };
     vectorField& u = U.primitiveFieldRef();
-    const vectorField& C = mesh_.C();
     for (label i = 0; i < n; ++i)
     {
         if (!bodies[i].free)
@@ -254,13 +438,16 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
             continue;
         }
         const rigidParticle& p = granular_.particle(i);
-        for (const label c : res[i].interiorCells)
+        const vector moved = minimumImage(p.position() - bodies[i].centre);
+        const fictitiousDomain::result& r = res[i];
+        forAll(r.interiorCells, j)
         {
-            u[c] = p.velocity() + (p.omega() ^ (C[c] - p.position()));
+            const vector arm = r.interiorCentres[j] - bodies[i].centre - moved;
+            u[r.interiorCells[j]] = p.velocity() + (p.omega() ^ arm);
         }
     }
     U.correctBoundaryConditions();
-    granularSeconds_ += clock.timeIncrement();
+    fdSeconds_ += clock.timeIncrement();
 
     const granularSystem::statistics& s = granular_.stats();
     Info<< "DLM/FD: " << n << " particles, " << nPoints << " points ("
@@ -305,9 +492,9 @@ void Foam::dlmfdCoupling::write()
     }
     if (Pstream::master())
     {
-        granular_.writeParticles(runTime.timePath());
+        granular_.writeParticles(runTime.timePath()/"uniform");
+        vtk_.write(granular_, runTime.value(), runTime.timeIndex());
     }
-    vtk_.write(granular_, runTime.value(), runTime.timeIndex());
 }
 
 

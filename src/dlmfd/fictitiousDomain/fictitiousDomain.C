@@ -18,18 +18,62 @@ License
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
 //- The collocation points of one body and the interpolation B from its
-//- cells to them (rows in CSR over the body's local cell indices)
+//- cells to them (rows in CSR over the body's gathered cells)
 struct Foam::fictitiousDomain::collocationSet
 {
-    labelList cells;
+    //- The cells: centres where they sit relative to the body, 1/V_c and
+    //- velocities
+    List<point> centres;
+    scalarList invVolume;
+    vectorField u;
+
     List<point> points;
     label nInterior = 0;
     labelList rowStart;
     labelList rowCell;
     scalarList rowWeight;
-    scalarList invVolume;   // 1/V_c of the local cells
 };
 
+
+//- One rank's cells of one body: the first nInterior are inside it (each
+//- an interior point), the others in the stencils of its surface points
+struct Foam::fictitiousDomain::contribution
+{
+    label body = -1;
+    List<point> centres;
+    scalarList volumes;
+    vectorField u;
+    label nInterior = 0;
+
+    //- The surface points (their index in the body's list) that have
+    //- cells here, and those cells in CSR
+    labelList surfacePoint;
+    labelList stencilStart;
+    labelList stencilCell;
+};
+
+
+namespace Foam
+{
+
+Ostream& operator<<(Ostream& os, const fictitiousDomain::contribution& c)
+{
+    os  << c.body << token::SPACE << c.centres << token::SPACE << c.volumes
+        << token::SPACE << c.u << token::SPACE << c.nInterior
+        << token::SPACE << c.surfacePoint << token::SPACE << c.stencilStart
+        << token::SPACE << c.stencilCell;
+    return os;
+}
+
+
+Istream& operator>>(Istream& is, fictitiousDomain::contribution& c)
+{
+    is  >> c.body >> c.centres >> c.volumes >> c.u >> c.nInterior
+        >> c.surfacePoint >> c.stencilStart >> c.stencilCell;
+    return is;
+}
+
+} // End namespace Foam
 
 
 namespace
@@ -161,7 +205,7 @@ label conjugateGradient
     const label n = b.size();
     x.setSize(n);
     x = Zero;
-    vectorField work(s.cells.size());
+    vectorField work(s.invVolume.size());
 
     vectorField r(b);
     scalar normB = 0;
@@ -255,25 +299,24 @@ Foam::scalar Foam::fictitiousDomain::cellSize(const scalar V) const
 bool Foam::fictitiousDomain::fitWeights
 (
     const point& p,
-    const UList<label>& cells,
+    const UList<point>& centres,
+    const scalar h,
     scalarList& weights
 ) const
 {
     // u(c) ~ a + G.(x_c - p): weights of a by linear least squares,
     // w = X (X^T X)^-1 e_0, lengths scaled by the cell size
     const label nCoeff = twoD_ ? 3 : 4;
-    if (cells.size() < nCoeff)
+    if (centres.size() < nCoeff)
     {
         return false;
     }
-    const vectorField& C = mesh_.C();
-    const scalar h = cellSize(mesh_.V()[cells[0]]);
 
     List<scalarList> XtX(nCoeff, scalarList(nCoeff, scalar(0)));
-    List<scalarList> rows(cells.size(), scalarList(nCoeff));
-    forAll(cells, i)
+    List<scalarList> rows(centres.size(), scalarList(nCoeff));
+    forAll(centres, i)
     {
-        const vector d = (C[cells[i]] - p)/h;
+        const vector d = (centres[i] - p)/h;
         rows[i][0] = 1;
         rows[i][1] = d.x();
         rows[i][2] = d.y();
@@ -295,8 +338,8 @@ bool Foam::fictitiousDomain::fitWeights
     {
         return false;
     }
-    weights.setSize(cells.size());
-    forAll(cells, i)
+    weights.setSize(centres.size());
+    forAll(centres, i)
     {
         scalar w = 0;
         for (label a = 0; a < nCoeff; ++a)
@@ -326,6 +369,7 @@ Foam::fictitiousDomain::fictitiousDomain
     maxIterations_(dict.getOrDefault<label>("maxIterations", 1000)),
     search_(mesh),
     twoD_(mesh.nSolutionD() == 2),
+    period_(Zero),
     cellOwner_(mesh.nCells(), -1),
     ownerDist2_(mesh.nCells(), GREAT),
     ownerInside_(mesh.nCells(), false),
@@ -342,7 +386,9 @@ Foam::fictitiousDomain::fictitiousDomain
         ),
         mesh,
         dimensionedVector(dimAcceleration, Zero)
-    )
+    ),
+    results_(),
+    commSeconds_(0)
 {
     if (!(surfaceSpacing_ > 0))
     {
@@ -389,6 +435,22 @@ Foam::fictitiousDomain::fictitiousDomain
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::fictitiousDomain::setPeriodicity(const vector& period)
+{
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        if (period[d] < 0)
+        {
+            FatalErrorInFunction
+                << "period " << period << " is not allowed: each component"
+                << " must be > 0, or 0 for a direction that is not periodic"
+                << exit(FatalError);
+        }
+    }
+    period_ = period;
+}
+
+
 void Foam::fictitiousDomain::claim
 (
     const label c,
@@ -414,6 +476,152 @@ void Foam::fictitiousDomain::claim
 }
 
 
+Foam::List<Foam::vector> Foam::fictitiousDomain::periodicShifts
+(
+    const point& x,
+    const scalar r
+) const
+{
+    // Every sum of -1, 0 or +1 period per periodic direction, kept when
+    // the ball about x - s reaches the mesh's bounding box
+    const boundBox& bb = mesh_.bounds();
+    DynamicList<vector> shifts(1, vector::zero);
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        if (period_[d] <= 0)
+        {
+            continue;
+        }
+        const label n = shifts.size();
+        for (const scalar sign : {-1.0, 1.0})
+        {
+            for (label i = 0; i < n; ++i)
+            {
+                vector s = shifts[i];
+                s[d] += sign*period_[d];
+                const point y = x - s;
+                scalar dist2 = 0;
+                for (direction e = 0; e < vector::nComponents; ++e)
+                {
+                    const scalar out =
+                        max(bb.min()[e] - y[e], y[e] - bb.max()[e]);
+                    if (out > 0)
+                    {
+                        dist2 += sqr(out);
+                    }
+                }
+                if (dist2 <= sqr(r))
+                {
+                    shifts.append(s);
+                }
+            }
+        }
+    }
+    return List<vector>(std::move(shifts));
+}
+
+
+Foam::scalarList Foam::fictitiousDomain::cellSizes
+(
+    const UList<body>& bodies
+) const
+{
+    // The mean volume of the cells within each body's bounding radius,
+    // summed over the ranks
+    const scalarField& V = mesh_.V();
+    scalarField sumV(bodies.size(), Zero);
+    scalarField count(bodies.size(), Zero);
+    DynamicList<label> near;
+    forAll(bodies, b)
+    {
+        const body& B = bodies[b];
+        const scalar rb = B.shape->boundingRadius();
+        for (const vector& s : periodicShifts(B.centre, rb))
+        {
+            near.clear();
+            search_.cellsInBall(B.centre - s, rb, near);
+            for (const label c : near)
+            {
+                sumV[b] += V[c];
+            }
+            count[b] += near.size();
+        }
+    }
+    clockTime clock;
+    reduce(sumV, sumOp<scalarField>());
+    reduce(count, sumOp<scalarField>());
+    commSeconds_ += clock.elapsedTime();
+
+    scalarList h(bodies.size());
+    forAll(bodies, b)
+    {
+        if (count[b] == 0)
+        {
+            FatalErrorInFunction
+                << "particle " << b << " at " << bodies[b].centre << " has"
+                << " no cell centre of the mesh within its bounding radius "
+                << bodies[b].shape->boundingRadius() << " m: it is outside"
+                << " the mesh, or smaller than a cell" << exit(FatalError);
+        }
+        h[b] = cellSize(sumV[b]/count[b]);
+
+        // A body must not meet itself across a period
+        const scalar reach =
+            bodies[b].shape->boundingRadius() + max(scalar(2), stencilRadius_)*h[b];
+        for (direction d = 0; d < vector::nComponents; ++d)
+        {
+            if (period_[d] > 0 && !(2*reach < period_[d]))
+            {
+                FatalErrorInFunction
+                    << "particle " << b << ": its bounding radius with the"
+                    << " stencils, " << reach << " m, is not below half the"
+                    << " period " << period_[d] << " m in direction "
+                    << label(d) << "; the periodic box must be longer than"
+                    << " twice that" << exit(FatalError);
+            }
+        }
+    }
+    return h;
+}
+
+
+void Foam::fictitiousDomain::surfacePointsOf
+(
+    const body& B,
+    const scalar h,
+    DynamicList<point>& pts
+) const
+{
+    pts.clear();
+    if (!surfacePoints_)
+    {
+        return;
+    }
+    const scalar zPlane = twoD_ ? mesh_.bounds().centre().z() : 0;
+    particleGeometry::surfacePoints
+    (
+        *B.shape, B.centre, B.R, surfaceSpacing_*h, zPlane, pts
+    );
+    if (retraction_ > 0)
+    {
+        // Towards the centre by retraction h (in the plane in 2D)
+        for (point& p : pts)
+        {
+            vector d = p - B.centre;
+            if (twoD_)
+            {
+                d.z() = 0;
+            }
+            const scalar r = mag(d);
+            if (r > VSMALL)
+            {
+                p -= (min(retraction_*h, 0.5*r)/r)*d;
+            }
+        }
+    }
+}
+
+
 void Foam::fictitiousDomain::findCandidates
 (
     const UList<body>& bodies,
@@ -421,8 +629,6 @@ void Foam::fictitiousDomain::findCandidates
 )
 {
     const vectorField& C = mesh_.C();
-    const scalarField& V = mesh_.V();
-    const scalar zPlane = twoD_ ? mesh_.bounds().centre().z() : 0;
 
     // The claims of the last step are undone
     for (const label c : touched_)
@@ -433,188 +639,251 @@ void Foam::fictitiousDomain::findCandidates
     }
     touched_.clear();
 
-    List<DynamicList<label>>& interior = cand.interior;
-    List<DynamicList<point>>& surface = cand.surface;
-    List<List<labelList>>& stencils = cand.stencils;
-    interior.setSize(bodies.size());
-    surface.setSize(bodies.size());
-    stencils.setSize(bodies.size());
+    const label n = bodies.size();
+    cand.h = cellSizes(bodies);
+    cand.shifts.setSize(n);
+    cand.interior.setSize(n);
+    cand.interiorShift.setSize(n);
+    cand.stencils.setSize(n);
+    cand.stencilShifts.setSize(n);
+
     DynamicList<label> near;
+    DynamicList<point> pts;
     forAll(bodies, b)
     {
         const body& B = bodies[b];
         const particleShape& shape = *B.shape;
         const scalar rb = shape.boundingRadius();
+        const scalar h = cand.h[b];
+        cand.shifts[b] =
+            periodicShifts(B.centre, rb + max(scalar(2), stencilRadius_)*h);
+        const List<vector>& shifts = cand.shifts[b];
 
-        near.clear();
-        search_.cellsInBall(B.centre, rb, near);
-        if (near.empty())
+        // A cell at C counts at C + s: it is near the body at x when C is
+        // near x - s
+        forAll(shifts, si)
         {
-            FatalErrorInFunction
-                << "particle " << b << " at " << B.centre << " has no"
-                << " cell centre of the mesh within its bounding radius "
-                << rb << " m: it is outside the mesh, or smaller than a"
-                << " cell" << exit(FatalError);
-        }
-        scalar meanV = 0;
-        for (const label c : near)
-        {
-            meanV += V[c];
-        }
-        const scalar h = cellSize(meanV/near.size());
-
-        near.clear();
-        search_.cellsInBall(B.centre, rb + 2*h, near);
-        for (const label c : near)
-        {
-            if (particleGeometry::contains(shape, B.centre, B.R, C[c]))
+            near.clear();
+            search_.cellsInBall(B.centre - shifts[si], rb + 2*h, near);
+            for (const label c : near)
             {
-                interior[b].append(c);
-                claim(c, b, magSqr(C[c] - B.centre), true);
-            }
-        }
-
-        DynamicList<point> pts;
-        if (surfacePoints_)
-        {
-            particleGeometry::surfacePoints
-            (
-                shape, B.centre, B.R, surfaceSpacing_*h, zPlane, pts
-            );
-            if (retraction_ > 0)
-            {
-                // Towards the centre by retraction h (in the plane in 2D)
-                for (point& p : pts)
+                const point x = C[c] + shifts[si];
+                if (particleGeometry::contains(shape, B.centre, B.R, x))
                 {
-                    vector d = p - B.centre;
-                    if (twoD_)
-                    {
-                        d.z() = 0;
-                    }
-                    const scalar r = mag(d);
-                    if (r > VSMALL)
-                    {
-                        p -= (min(retraction_*h, 0.5*r)/r)*d;
-                    }
+                    cand.interior[b].append(c);
+                    cand.interiorShift[b].append(si);
+                    claim(c, b, magSqr(x - B.centre), true);
                 }
             }
         }
+
         // Each surface point's velocity is the linear least-squares fit
         // of the fluid cells around it outside the body, extrapolated to
         // the point: the constraint puts the no-slip surface where the
         // body's surface is, without making those cells move rigidly
         // (a stencil across the surface did: the body acted half a cell
         // thicker)
-        stencils[b].setSize(pts.size());
-        DynamicList<label> ball;
+        surfacePointsOf(B, h, pts);
+        cand.stencils[b].setSize(pts.size());
+        cand.stencilShifts[b].setSize(pts.size());
         forAll(pts, k)
         {
-            ball.clear();
-            search_.cellsInBall(pts[k], stencilRadius_*h, ball);
-            DynamicList<label> st;
-            for (const label c : ball)
+            DynamicList<label> st, stShift;
+            forAll(shifts, si)
             {
-                if (!particleGeometry::contains(shape, B.centre, B.R, C[c]))
+                near.clear();
+                search_.cellsInBall
+                (
+                    pts[k] - shifts[si], stencilRadius_*h, near
+                );
+                for (const label c : near)
                 {
-                    st.append(c);
+                    const point x = C[c] + shifts[si];
+                    if (!particleGeometry::contains(shape, B.centre, B.R, x))
+                    {
+                        st.append(c);
+                        stShift.append(si);
+                        claim(c, b, magSqr(x - B.centre), false);
+                    }
                 }
             }
-            for (const label c : st)
-            {
-                claim(c, b, magSqr(C[c] - B.centre), false);
-            }
-            stencils[b][k].transfer(st);
+            cand.stencils[b][k].transfer(st);
+            cand.stencilShifts[b][k].transfer(stShift);
         }
-        surface[b].transfer(pts);
     }
+}
+
+
+void Foam::fictitiousDomain::collect
+(
+    const label b,
+    const candidates& cand,
+    const vectorField& u,
+    labelList& localIndex,
+    contribution& con,
+    labelList& cells
+) const
+{
+    const vectorField& C = mesh_.C();
+    const scalarField& V = mesh_.V();
+    const List<vector>& shifts = cand.shifts[b];
+
+    DynamicList<label> cellList;
+    DynamicList<point> centres;
+    const auto localOf = [&](const label c, const label si)
+    {
+        if (localIndex[c] < 0)
+        {
+            localIndex[c] = cellList.size();
+            cellList.append(c);
+            centres.append(C[c] + shifts[si]);
+        }
+        return localIndex[c];
+    };
+
+    forAll(cand.interior[b], i)
+    {
+        const label c = cand.interior[b][i];
+        if (cellOwner_[c] == b)
+        {
+            localOf(c, cand.interiorShift[b][i]);
+        }
+    }
+    con.nInterior = cellList.size();
+
+    DynamicList<label> surfacePoint, stencilStart, stencilCell;
+    forAll(cand.stencils[b], k)
+    {
+        const labelList& st = cand.stencils[b][k];
+        const label start = stencilCell.size();
+        forAll(st, i)
+        {
+            if (cellOwner_[st[i]] == b)
+            {
+                stencilCell.append
+                (
+                    localOf(st[i], cand.stencilShifts[b][k][i])
+                );
+            }
+        }
+        if (stencilCell.size() > start)
+        {
+            surfacePoint.append(k);
+            stencilStart.append(start);
+        }
+    }
+    stencilStart.append(stencilCell.size());
+
+    for (const label c : cellList)
+    {
+        localIndex[c] = -1;
+    }
+    con.body = b;
+    con.centres.transfer(centres);
+    con.volumes.setSize(cellList.size());
+    con.u.setSize(cellList.size());
+    forAll(cellList, i)
+    {
+        con.volumes[i] = V[cellList[i]];
+        con.u[i] = u[cellList[i]];
+    }
+    con.surfacePoint.transfer(surfacePoint);
+    con.stencilStart.transfer(stencilStart);
+    con.stencilCell.transfer(stencilCell);
+    cells.transfer(cellList);
 }
 
 
 void Foam::fictitiousDomain::assemble
 (
-    const label b,
-    const candidates& cand,
-    labelList& localIndex,
+    const body& B,
+    const scalar h,
+    const UList<const contribution*>& parts,
     collocationSet& s,
     result& res
 ) const
 {
-    const vectorField& C = mesh_.C();
-    const scalarField& V = mesh_.V();
-    const List<DynamicList<label>>& interior = cand.interior;
-    const List<DynamicList<point>>& surface = cand.surface;
-    const List<List<labelList>>& stencils = cand.stencils;
+    // The cells, rank after rank
+    label nCells = 0;
+    for (const contribution* c : parts)
+    {
+        nCells += c->centres.size();
+    }
+    s.centres.setSize(nCells);
+    s.invVolume.setSize(nCells);
+    s.u.setSize(nCells);
+    labelList offset(parts.size());
+    nCells = 0;
+    forAll(parts, r)
+    {
+        const contribution& c = *parts[r];
+        offset[r] = nCells;
+        forAll(c.centres, i)
+        {
+            s.centres[nCells] = c.centres[i];
+            s.invVolume[nCells] = 1/c.volumes[i];
+            s.u[nCells] = c.u[i];
+            ++nCells;
+        }
+    }
 
-    // The body's points and B, with the cells it owns
-    DynamicList<label> cells;
     DynamicList<point> points;
     DynamicList<label> rowStart, rowCell;
     DynamicList<scalar> rowWeight;
-    const auto localOf = [&](const label c)
+
+    // Interior points: the centres of the cells inside
+    forAll(parts, r)
     {
-        if (localIndex[c] < 0)
+        for (label i = 0; i < parts[r]->nInterior; ++i)
         {
-            localIndex[c] = cells.size();
-            cells.append(c);
+            rowStart.append(rowCell.size());
+            rowCell.append(offset[r] + i);
+            rowWeight.append(1);
+            points.append(s.centres[offset[r] + i]);
         }
-        return localIndex[c];
-    };
-    for (const label c : interior[b])
-    {
-        if (cellOwner_[c] != b)
-        {
-            continue;
-        }
-        rowStart.append(rowCell.size());
-        rowCell.append(localOf(c));
-        rowWeight.append(1);
-        points.append(C[c]);
     }
     s.nInterior = points.size();
 
-    DynamicList<label> st;
-    scalarList w;
-    forAll(surface[b], k)
+    // Surface points: the fit of their stencils, gathered from the ranks
+    DynamicList<point> surface;
+    surfacePointsOf(B, h, surface);
+    List<DynamicList<label>> stencil(surface.size());
+    forAll(parts, r)
     {
-        st.clear();
-        for (const label c : stencils[b][k])
+        const contribution& c = *parts[r];
+        forAll(c.surfacePoint, j)
         {
-            if (cellOwner_[c] == b)
+            DynamicList<label>& st = stencil[c.surfacePoint[j]];
+            for (label e = c.stencilStart[j]; e < c.stencilStart[j + 1]; ++e)
             {
-                st.append(c);
+                st.append(offset[r] + c.stencilCell[e]);
             }
         }
-        if (st.empty() || !fitWeights(surface[b][k], st, w))
+    }
+    scalarList w;
+    forAll(surface, k)
+    {
+        const List<point> centres(UIndirectList<point>(s.centres, stencil[k]));
+        if (stencil[k].empty() || !fitWeights(surface[k], centres, h, w))
         {
             ++res.nSurfaceDropped;
             continue;
         }
         rowStart.append(rowCell.size());
-        forAll(st, i)
+        forAll(stencil[k], i)
         {
-            rowCell.append(localOf(st[i]));
+            rowCell.append(stencil[k][i]);
             rowWeight.append(w[i]);
         }
-        points.append(surface[b][k]);
+        points.append(surface[k]);
     }
     rowStart.append(rowCell.size());
-    for (const label c : cells)
-    {
-        localIndex[c] = -1;
-    }
 
-    s.cells.transfer(cells);
     s.points.transfer(points);
     s.rowStart.transfer(rowStart);
     s.rowCell.transfer(rowCell);
     s.rowWeight.transfer(rowWeight);
-    s.invVolume.setSize(s.cells.size());
-    forAll(s.cells, i)
-    {
-        s.invVolume[i] = 1/V[s.cells[i]];
-    }
     res.nInterior = s.nInterior;
-    res.interiorCells = SubList<label>(s.cells, s.nInterior);
     res.nSurface = s.points.size() - s.nInterior;
 }
 
@@ -623,21 +892,22 @@ void Foam::fictitiousDomain::solveBody
 (
     const label b,
     const body& B,
-    const collocationSet& s,
+    collocationSet& s,
     const scalar dt,
-    vectorField& u,
+    vectorField& f,
     result& res
-)
+) const
 {
     const label n = s.points.size();
+    vectorField& u = s.u;
 
     // Right-hand side g = V* + Omega* x r - B u_hat (in-plane in 2D)
-    const auto Bu = [&](const label k, const vectorField& field)
+    const auto Bu = [&](const label k)
     {
         vector sum(Zero);
         for (label e = s.rowStart[k]; e < s.rowStart[k + 1]; ++e)
         {
-            sum += s.rowWeight[e]*field[s.cells[s.rowCell[e]]];
+            sum += s.rowWeight[e]*u[s.rowCell[e]];
         }
         return sum;
     };
@@ -655,7 +925,7 @@ void Foam::fictitiousDomain::solveBody
     {
         const vector r = s.points[k] - B.centre;
         const vector rigid = B.V + (B.omega ^ r);
-        const vector fluid = Bu(k, u);
+        const vector fluid = Bu(k);
         g[k] = inPlane(rigid - fluid);
         velocityScale2 += max(magSqr(rigid), magSqr(fluid));
     }
@@ -781,22 +1051,21 @@ void Foam::fictitiousDomain::solveBody
     res.dOmega = -w_Omega;
 
     // The fluid in the body's cells, and the new force density
-    vectorField spread(s.cells.size(), Zero);
+    f.setSize(u.size());
+    f = Zero;
     forAll(s.points, k)
     {
         for (label e = s.rowStart[k]; e < s.rowStart[k + 1]; ++e)
         {
-            spread[s.rowCell[e]] += s.rowWeight[e]*lambda[k];
+            f[s.rowCell[e]] += s.rowWeight[e]*lambda[k];
         }
         res.sumLambda += lambda[k];
         res.sumMoment += (s.points[k] - B.centre) ^ lambda[k];
     }
-    forAll(s.cells, i)
+    forAll(f, i)
     {
-        const label c = s.cells[i];
-        const vector f = spread[i]*s.invVolume[i];
-        source_.primitiveFieldRef()[c] = f;
-        u[c] += dt*f;
+        f[i] *= s.invVolume[i];
+        u[i] += dt*f[i];
     }
 
     // What is left of the constraint
@@ -808,8 +1077,55 @@ void Foam::fictitiousDomain::solveBody
         res.constraintError = max
         (
             res.constraintError,
-            mag(inPlane(Bu(k, u) - (Vnew + (omegaNew ^ r))))
+            mag(inPlane(Bu(k) - (Vnew + (omegaNew ^ r))))
         );
+    }
+}
+
+
+void Foam::fictitiousDomain::gatherResults()
+{
+    // Each body was solved on one rank, zero elsewhere: sums give it
+    constexpr label nValues = 17;
+    scalarList values(nValues*results_.size(), Zero);
+    forAll(results_, b)
+    {
+        const result& r = results_[b];
+        scalar* v = &values[nValues*b];
+        for (direction d = 0; d < vector::nComponents; ++d)
+        {
+            v[d] = r.dV[d];
+            v[3 + d] = r.dOmega[d];
+            v[6 + d] = r.sumLambda[d];
+            v[9 + d] = r.sumMoment[d];
+        }
+        v[12] = r.nInterior;
+        v[13] = r.nSurface;
+        v[14] = r.nSurfaceDropped;
+        v[15] = r.iterations;
+        v[16] = r.constraintError;
+    }
+    Pstream::listCombineGather(values, plusEqOp<scalar>());
+    if (!Pstream::master())
+    {
+        return;
+    }
+    forAll(results_, b)
+    {
+        result& r = results_[b];
+        const scalar* v = &values[nValues*b];
+        for (direction d = 0; d < vector::nComponents; ++d)
+        {
+            r.dV[d] = v[d];
+            r.dOmega[d] = v[3 + d];
+            r.sumLambda[d] = v[6 + d];
+            r.sumMoment[d] = v[9 + d];
+        }
+        r.nInterior = label(v[12]);
+        r.nSurface = label(v[13]);
+        r.nSurfaceDropped = label(v[14]);
+        r.iterations = label(v[15]);
+        r.constraintError = v[16];
     }
 }
 
@@ -822,28 +1138,149 @@ Foam::fictitiousDomain::solve
     const scalar dt
 )
 {
+    const label nProcs = Pstream::nProcs();
+    const label me = Pstream::myProcNo();
+    const auto solverOf = [&](const label b) { return b % nProcs; };
+
     // The fluid without the previous multipliers' force
     vectorField& u = U.primitiveFieldRef();
     u -= dt*source_.primitiveField();
     source_.primitiveFieldRef() = Zero;
 
-    // Every body's candidate points, and the cells shared out
+    // Every body's candidate points on this rank, and the cells shared out
     candidates cand;
     findCandidates(bodies, cand);
 
-    // Each body's problem on the cells it owns
     results_.setSize(bodies.size());
-    labelList localIndex(mesh_.nCells(), -1);
-    forAll(bodies, b)
+    for (result& r : results_)
     {
-        result& res = results_[b];
-        res = result();
-        collocationSet s;
-        assemble(b, cand, localIndex, s, res);
-        if (s.points.size())
+        r = result();
+    }
+
+    // This rank's cells of each body, to the rank that solves it
+    List<List<labelList>> sentCells(nProcs);
+    {
+        List<DynamicList<labelList>> cellsTo(nProcs);
+        PstreamBuffers toSolvers(Pstream::commsTypes::nonBlocking);
+        List<DynamicList<contribution>> outgoing(nProcs);
+        labelList localIndex(mesh_.nCells(), -1);
+        forAll(bodies, b)
         {
-            solveBody(b, bodies[b], s, dt, u, res);
+            contribution con;
+            labelList cells;
+            collect(b, cand, u, localIndex, con, cells);
+            if (cells.empty())
+            {
+                continue;
+            }
+            result& res = results_[b];
+            res.interiorCells = SubList<label>(cells, con.nInterior);
+            res.interiorCentres = SubList<point>(con.centres, con.nInterior);
+            const label q = solverOf(b);
+            cellsTo[q].append(std::move(cells));
+            outgoing[q].append(std::move(con));
         }
+        for (label q = 0; q < nProcs; ++q)
+        {
+            sentCells[q].transfer(cellsTo[q]);
+            // One by one: a List of them would be checked for equal
+            // elements, which contributions do not compare
+            UOPstream os(q, toSolvers);
+            os << outgoing[q].size();
+            for (const contribution& con : outgoing[q])
+            {
+                os << con;
+            }
+        }
+        clockTime clock;
+        toSolvers.finishedSends();
+        commSeconds_ += clock.timeIncrement();
+
+        // The bodies this rank solves, from the cells of every rank
+        List<List<contribution>> incoming(nProcs);
+        for (label r = 0; r < nProcs; ++r)
+        {
+            UIPstream is(r, toSolvers);
+            label size = 0;
+            is >> size;
+            incoming[r].setSize(size);
+            for (contribution& con : incoming[r])
+            {
+                is >> con;
+            }
+        }
+        List<DynamicList<const contribution*>> partsOf(bodies.size());
+        List<DynamicList<labelPair>> whereFrom(bodies.size());
+        forAll(incoming, r)
+        {
+            forAll(incoming[r], j)
+            {
+                const label b = incoming[r][j].body;
+                partsOf[b].append(&incoming[r][j]);
+                whereFrom[b].append(labelPair(r, j));
+            }
+        }
+
+        // Solve, and send each rank the force density of its cells
+        List<List<vectorField>> forces(nProcs);
+        forAll(incoming, r)
+        {
+            forces[r].setSize(incoming[r].size());
+        }
+        forAll(bodies, b)
+        {
+            if (solverOf(b) != me || partsOf[b].empty())
+            {
+                continue;
+            }
+            collocationSet s;
+            result& res = results_[b];
+            assemble(bodies[b], cand.h[b], partsOf[b], s, res);
+            vectorField f(s.u.size(), Zero);
+            if (s.points.size())
+            {
+                solveBody(b, bodies[b], s, dt, f, res);
+            }
+            label start = 0;
+            for (const labelPair& rj : whereFrom[b])
+            {
+                const label size = incoming[rj.first()][rj.second()].u.size();
+                forces[rj.first()][rj.second()] = SubField<vector>(f, size, start);
+                start += size;
+            }
+        }
+
+        clock.timeIncrement();
+        PstreamBuffers toOwners(Pstream::commsTypes::nonBlocking);
+        for (label r = 0; r < nProcs; ++r)
+        {
+            UOPstream os(r, toOwners);
+            os << forces[r];
+        }
+        toOwners.finishedSends();
+        commSeconds_ += clock.timeIncrement();
+        vectorField& src = source_.primitiveFieldRef();
+        for (label q = 0; q < nProcs; ++q)
+        {
+            List<vectorField> back;
+            UIPstream is(q, toOwners);
+            is >> back;
+            forAll(back, j)
+            {
+                const labelList& cells = sentCells[q][j];
+                forAll(cells, i)
+                {
+                    src[cells[i]] = back[j][i];
+                    u[cells[i]] += dt*back[j][i];
+                }
+            }
+        }
+    }
+
+    {
+        clockTime clock;
+        gatherResults();
+        commSeconds_ += clock.elapsedTime();
     }
 
     U.correctBoundaryConditions();

@@ -68,8 +68,16 @@ void Foam::granularSystem::readParticles(const fileName& file)
             << "cannot open the particle file " << file
             << exit(FatalError);
     }
-    const dictionary dict(ifs);
+    readParticles(dictionary(ifs), file);
+}
 
+
+void Foam::granularSystem::readParticles
+(
+    const dictionary& dict,
+    const fileName& file
+)
+{
     particles_.clear();
     ids_.clear();
     shapeOf_.clear();
