@@ -61,12 +61,18 @@ Foam::List<Foam::planeWall> Foam::planeWall::fromPatches
     forAll(patchIDs, i)
     {
         const polyPatch& pp = mesh.boundaryMesh()[patchIDs[i]];
-        // Area-weighted normal and centre; the normal points out of the
-        // mesh, the wall's into it
+        // Area-weighted normal and centre over every processor's part of
+        // the patch (a decomposed patch may have no face on a processor);
+        // the normal points out of the mesh, the wall's into it
         const vectorField Sf(pp.faceAreas());
-        const vector S = sum(Sf);
         const vectorField Cf(pp.faceCentres());
-        const point c = sum(mag(Sf)*Cf)/max(sum(mag(Sf)), VSMALL);
+        vector S = sum(Sf);
+        vector sumAC = sum(mag(Sf)*Cf);
+        scalar sumA = sum(mag(Sf));
+        reduce(S, sumOp<vector>());
+        reduce(sumAC, sumOp<vector>());
+        reduce(sumA, sumOp<scalar>());
+        const point c = sumAC/max(sumA, VSMALL);
         if (mag(S) < VSMALL)
         {
             FatalErrorInFunction
