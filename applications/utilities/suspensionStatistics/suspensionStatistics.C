@@ -378,17 +378,6 @@ int main(int argc, char *argv[])
     }
     const scalar boxVolume = box.volume();
     const scalar phi = Np*vp/boxVolume;
-    const auto minimumImage = [&](vector d)
-    {
-        for (direction k = 0; k < 3; ++k)
-        {
-            if (period[k] > 0)
-            {
-                d[k] -= period[k]*std::round(d[k]/period[k]);
-            }
-        }
-        return d;
-    };
 
     const bool isSphere = p0.shape().type() == "sphere";
     if (!isSphere && !options.found("isolatedReynolds"))
@@ -461,14 +450,21 @@ int main(int argc, char *argv[])
         {
             const std::vector<sample>& s = step.second;
             const label n = s.size();
+            const bool inWindow = step.first >= tStart;
             vector meanV(Zero);
             scalar meanOmegaH = 0, meanF = 0;
             for (const sample& p : s)
             {
                 meanV += p.V;
-                const vector oh = p.omega - (p.omega & eg)*eg;
-                meanOmegaH += mag(oh);
+                const scalar oh = mag(p.omega - (p.omega & eg)*eg);
+                meanOmegaH += oh;
                 meanF += p.F & up;
+                if (inWindow)
+                {
+                    omegaH.push_back(oh*tg);
+                    omegaX.push_back(p.omega[hx]*tg);
+                    Vy.push_back(p.V[hy]/ug);
+                }
             }
             meanV /= n;
             meanOmegaH /= n;
@@ -490,7 +486,7 @@ int main(int argc, char *argv[])
                 << varZ/max(varH, VSMALL) << ',' << meanOmegaH*tg << ','
                 << drag << nl;
 
-            if (step.first >= tStart)
+            if (inWindow)
             {
                 ++nWindow;
                 sumVs += Vs;
@@ -498,15 +494,6 @@ int main(int argc, char *argv[])
                 sumVarH += varH;
                 sumDrag += meanF;
                 sumOmegaH += meanOmegaH;
-                for (const sample& p : s)
-                {
-                    omegaH.push_back
-                    (
-                        mag(p.omega - (p.omega & eg)*eg)*tg
-                    );
-                    omegaX.push_back(p.omega[hx]*tg);
-                    Vy.push_back(p.V[hy]/ug);
-                }
             }
         }
     }
@@ -607,7 +594,7 @@ int main(int argc, char *argv[])
             {
                 for (size_t j = i + 1; j < s.size(); ++j)
                 {
-                    const vector d = minimumImage(s[j].x - s[i].x);
+                    const vector d = granular.separation(s[j].x, s[i].x);
                     const scalar r = mag(d);
                     const label br = label(r/dr);
                     if (br >= nr || r == 0)
@@ -678,29 +665,10 @@ int main(int argc, char *argv[])
             // The periodic shifts of a ball of radius r about x
             const auto shifts = [&](const point& x, const scalar r)
             {
-                DynamicList<vector> out(1, vector::zero);
-                for (direction d = 0; d < 3; ++d)
-                {
-                    if (period[d] <= 0)
-                    {
-                        continue;
-                    }
-                    const label n = out.size();
-                    for (const scalar sgn : {-1.0, 1.0})
-                    {
-                        for (label i = 0; i < n; ++i)
-                        {
-                            vector s = out[i];
-                            s[d] += sgn*period[d];
-                            const scalar y = x[d] - s[d];
-                            if (y + r >= box.min()[d] && y - r <= box.max()[d])
-                            {
-                                out.append(s);
-                            }
-                        }
-                    }
-                }
-                return out;
+                return cellCentreSearch::periodicShifts
+                (
+                    mesh.bounds(), period, x, r
+                );
             };
 
             // Cells inside a particle

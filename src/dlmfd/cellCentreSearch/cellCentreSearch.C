@@ -110,4 +110,50 @@ void Foam::cellCentreSearch::cellsInBall
 }
 
 
+Foam::List<Foam::vector> Foam::cellCentreSearch::periodicShifts
+(
+    const boundBox& bb,
+    const vector& period,
+    const point& x,
+    const scalar r
+)
+{
+    // Every sum of -1, 0 or +1 period per periodic direction, kept when
+    // the ball about x - s reaches the box
+    DynamicList<vector> shifts(1, vector::zero);
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        if (period[d] <= 0)
+        {
+            continue;
+        }
+        const label n = shifts.size();
+        for (const scalar sign : {-1.0, 1.0})
+        {
+            for (label i = 0; i < n; ++i)
+            {
+                vector s = shifts[i];
+                s[d] += sign*period[d];
+                const point y = x - s;
+                scalar dist2 = 0;
+                for (direction e = 0; e < vector::nComponents; ++e)
+                {
+                    const scalar out =
+                        max(bb.min()[e] - y[e], y[e] - bb.max()[e]);
+                    if (out > 0)
+                    {
+                        dist2 += sqr(out);
+                    }
+                }
+                if (dist2 <= sqr(r))
+                {
+                    shifts.append(s);
+                }
+            }
+        }
+    }
+    return List<vector>(std::move(shifts));
+}
+
+
 // ************************************************************************* //

@@ -17,7 +17,6 @@ License
 #include "Time.H"
 #include "cyclicPolyPatch.H"
 #include "processorCyclicPolyPatch.H"
-#include "IFstream.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -157,14 +156,7 @@ Foam::fileName Foam::dlmfdCoupling::readParticles()
                 << "    Place particles with placeParticles, or copy them"
                 << " from 0.orig" << exit(FatalError);
         }
-        IFstream ifs(file);
-        if (!ifs.good())
-        {
-            FatalErrorInFunction
-                << "cannot open the particle file " << file
-                << exit(FatalError);
-        }
-        dict.read(ifs);
+        dict = granularSystem::readParticleFile(file);
     }
     Pstream::scatter(file);
     Pstream::scatter(dict);
@@ -418,18 +410,6 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
     // The fluid carried by each free particle moves with it: its interior
     // cells, at their centres relative to the body at X*, which moved by
     // X^{n+1} - X* (less than half a period, however it was wrapped)
-    const auto minimumImage = [&](vector d)
-    {
-        const vector& L = fd_.period();
-        for (direction k = 0; k < vector::nComponents; ++k)
-        {
-            if (L[k] > 0)
-            {
-                d[k] -= L[k]*std::round(d[k]/L[k]);
-            }
-        }
-        return d;
-    };
     vectorField& u = U.primitiveFieldRef();
     for (label i = 0; i < n; ++i)
     {
@@ -438,7 +418,8 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
             continue;
         }
         const rigidParticle& p = granular_.particle(i);
-        const vector moved = minimumImage(p.position() - bodies[i].centre);
+        const vector moved =
+            granular_.separation(p.position(), bodies[i].centre);
         const fictitiousDomain::result& r = res[i];
         forAll(r.interiorCells, j)
         {

@@ -476,51 +476,6 @@ void Foam::fictitiousDomain::claim
 }
 
 
-Foam::List<Foam::vector> Foam::fictitiousDomain::periodicShifts
-(
-    const point& x,
-    const scalar r
-) const
-{
-    // Every sum of -1, 0 or +1 period per periodic direction, kept when
-    // the ball about x - s reaches the mesh's bounding box
-    const boundBox& bb = mesh_.bounds();
-    DynamicList<vector> shifts(1, vector::zero);
-    for (direction d = 0; d < vector::nComponents; ++d)
-    {
-        if (period_[d] <= 0)
-        {
-            continue;
-        }
-        const label n = shifts.size();
-        for (const scalar sign : {-1.0, 1.0})
-        {
-            for (label i = 0; i < n; ++i)
-            {
-                vector s = shifts[i];
-                s[d] += sign*period_[d];
-                const point y = x - s;
-                scalar dist2 = 0;
-                for (direction e = 0; e < vector::nComponents; ++e)
-                {
-                    const scalar out =
-                        max(bb.min()[e] - y[e], y[e] - bb.max()[e]);
-                    if (out > 0)
-                    {
-                        dist2 += sqr(out);
-                    }
-                }
-                if (dist2 <= sqr(r))
-                {
-                    shifts.append(s);
-                }
-            }
-        }
-    }
-    return List<vector>(std::move(shifts));
-}
-
-
 Foam::scalarList Foam::fictitiousDomain::cellSizes
 (
     const UList<body>& bodies
@@ -536,7 +491,14 @@ Foam::scalarList Foam::fictitiousDomain::cellSizes
     {
         const body& B = bodies[b];
         const scalar rb = B.shape->boundingRadius();
-        for (const vector& s : periodicShifts(B.centre, rb))
+        const List<vector> shifts
+        (
+            cellCentreSearch::periodicShifts
+            (
+                mesh_.bounds(), period_, B.centre, rb
+            )
+        );
+        for (const vector& s : shifts)
         {
             near.clear();
             search_.cellsInBall(B.centre - s, rb, near);
@@ -655,8 +617,11 @@ void Foam::fictitiousDomain::findCandidates
         const particleShape& shape = *B.shape;
         const scalar rb = shape.boundingRadius();
         const scalar h = cand.h[b];
-        cand.shifts[b] =
-            periodicShifts(B.centre, rb + max(scalar(2), stencilRadius_)*h);
+        cand.shifts[b] = cellCentreSearch::periodicShifts
+        (
+            mesh_.bounds(), period_, B.centre,
+            rb + max(scalar(2), stencilRadius_)*h
+        );
         const List<vector>& shifts = cand.shifts[b];
 
         // A cell at C counts at C + s: it is near the body at x when C is

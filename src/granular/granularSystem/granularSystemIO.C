@@ -59,7 +59,7 @@ namespace
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::granularSystem::readParticles(const fileName& file)
+Foam::dictionary Foam::granularSystem::readParticleFile(const fileName& file)
 {
     IFstream ifs(file);
     if (!ifs.good())
@@ -68,7 +68,13 @@ void Foam::granularSystem::readParticles(const fileName& file)
             << "cannot open the particle file " << file
             << exit(FatalError);
     }
-    readParticles(dictionary(ifs), file);
+    return dictionary(ifs);
+}
+
+
+void Foam::granularSystem::readParticles(const fileName& file)
+{
+    readParticles(readParticleFile(file), file);
 }
 
 
