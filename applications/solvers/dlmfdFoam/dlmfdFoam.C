@@ -44,7 +44,12 @@ Usage
         constant/flowControlProperties | meanFlowControl model, see Foam::meanFlowControl
         system/fvSolution PIMPLE       | nOuterCorrectors, nCorrectors, ...
         constant/fvOptions (optional)  | extra sources and constraints
+        constant/sceneProperties (optional) | effects, Foam::sceneEffects
     \endtable
+
+    With "fluid off" in constant/sceneProperties the case is a dry granular
+    scene: no fluid field, transport model or coupling is made, the
+    granular system runs alone (Foam::granularRun, as granularFoam).
 
     Writes the fields U, p, phi at every write time, \<time\>/uniform/gradP,
     and postProcessing/meanFlowControl/\<startTime\>/meanFlowControl.dat.
@@ -57,6 +62,7 @@ Usage
 #include "fvOptions.H"
 #include "meanFlowControl.H"
 #include "dlmfdCoupling.H"
+#include "granularRun.H"
 #include "uniformDimensionedFields.H"
 #include "clockTime.H"
 
@@ -76,6 +82,16 @@ int main(int argc, char *argv[])
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
     #include "createTime.H"
+
+    // The effects the scene declares (constant/sceneProperties): a dry
+    // scene (fluid off) makes no fluid field at all
+    sceneEffects effects(sceneEffects::read(runTime));
+    if (!effects.settle("fluid", true, "dlmfdFoam"))
+    {
+        #include "runDryScene.H"
+        return 0;
+    }
+
     #include "createMesh.H"
     #include "createControl.H"
     #include "createTimeControls.H"

@@ -31,6 +31,8 @@ Usage
     \b granularFoam [OPTIONS]
 
     Reads:
+    - constant/sceneProperties (optional: the effects the scene declares,
+      Foam::sceneEffects; fluid must be off)
     - constant/particleProperties (shapes, materials)
     - constant/collisionProperties (law, pairs, walls, domain; and
       wallPatches { patches (floor sides); material steel; } to take plane
@@ -42,13 +44,7 @@ Usage
 
 #include "argList.H"
 #include "Time.H"
-#include "IOdictionary.H"
-#include "uniformDimensionedFields.H"
-#include "OFstream.H"
-#include "clockTime.H"
-#include "granularSystem.H"
-#include "granularVTKWriter.H"
-#include "polyMesh.H"
+#include "granularRun.H"
 
 using namespace Foam;
 
@@ -65,152 +61,24 @@ int main(int argc, char *argv[])
     #include "setRootCase.H"
     #include "createTime.H"
 
-    const IOdictionary particleProperties
-    (
-        IOobject
-        (
-            "particleProperties",
-            runTime.constant(),
-            runTime,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE
-        )
-    );
-    const IOdictionary collisionProperties
-    (
-        IOobject
-        (
-            "collisionProperties",
-            runTime.constant(),
-            runTime,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE
-        )
-    );
-
-    granularSystem granular(particleProperties, collisionProperties);
-
-    // Walls from the planar patches of a mesh, where asked for
-    if (granular.wantsWallPatches())
+    sceneEffects effects(sceneEffects::read(runTime));
+    if (effects.settle("fluid", false, "granularFoam"))
     {
-        Info<< "Reading the mesh for its wall patches" << nl;
-        const polyMesh mesh
+        effects.contradiction
         (
-            IOobject
-            (
-                polyMesh::defaultRegion,
-                runTime.timeName(),
-                runTime,
-                IOobject::MUST_READ
-            )
+            "fluid", "granularFoam has no fluid; run dlmfdFoam"
         );
-        granular.addWallPatches(mesh);
     }
 
-    IOobject gHeader
-    (
-        "g",
-        runTime.constant(),
-        runTime,
-        IOobject::MUST_READ,
-        IOobject::NO_WRITE
-    );
-    if (gHeader.typeHeaderOk<uniformDimensionedVectorField>(true))
-    {
-        const uniformDimensionedVectorField g(gHeader);
-        granular.setGravity(g.value());
-    }
-    Info<< "Gravity " << granular.gravity() << " m/s^2" << nl;
+    granularRun scene(runTime, effects);
+    scene.run();
 
-    const fileName particleFile(runTime.timePath()/"particles");
-    if (!isFile(particleFile))
-    {
-        FatalErrorInFunction
-            << "no particle file " << particleFile << nl
-            << "    Place particles with placeParticles, or copy them from"
-            << " 0.orig" << exit(FatalError);
-    }
-    granular.readParticles(particleFile);
-
-    Info<< "Particles: " << granular.size() << " from " << particleFile
-        << nl << "Shapes:";
-    for (const particleShape& s : granular.shapes())
-    {
-        Info<< ' ' << s.name() << " (" << s.type() << ", D = "
-            << s.equivalentDiameter() << " m)";
-    }
-    Info<< nl << "Walls: " << granular.walls().size() << nl;
-    for (const planeWall& w : granular.walls())
-    {
-        Info<< "    wall " << w.name << ": point " << w.origin << " normal "
-            << w.normal << " material " << w.material << nl;
-    }
-    Info<< "Periodic " << granular.periodic() << nl
-        << "Granular sub-step T_c/N = " << granular.maxSubStep() << " s,"
-        << " skin " << granular.skin() << " m" << nl << endl;
-
-    granularVTKWriter vtk
-    (
-        runTime.path()/"VTK", runTime.value()
-    );
-    label outputIndex = runTime.timeIndex();
-    if (runTime.timeIndex() == 0 || !isDir(runTime.path()/"VTK"))
-    {
-        vtk.write(granular, runTime.value(), outputIndex);
-    }
-
-    const fileName datDir
-    (
-        runTime.path()/"postProcessing"/"granular"/runTime.timeName()
-    );
-    mkDir(datDir);
-    OFstream dat(datDir/"granular.dat");
-    dat << "# time kineticEnergy[J] nSubSteps contacts wallContacts"
-        << " maxOverlapRatio listBuilds cpuTime[s]" << nl;
-
-    clockTime clock;
-    scalar granularSeconds = 0, outputSeconds = 0;
-    label nSubTotal = 0;
-
-    while (runTime.run())
-    {
-        ++runTime;
-
-        clock.timeIncrement();
-        const label nSub = granular.evolve(runTime.deltaTValue());
-        granularSeconds += clock.timeIncrement();
-        nSubTotal += nSub;
-
-        const granularSystem::statistics& s = granular.stats();
-        dat << runTime.value() << ' ' << s.kineticEnergy << ' '
-            << nSub << ' ' << s.nContacts << ' ' << s.nWallContacts << ' '
-            << s.maxOverlapRatio << ' ' << s.nListBuilds << ' '
-            << runTime.elapsedCpuTime() << nl;
-
-        if (runTime.writeTime())
-        {
-            clock.timeIncrement();
-            runTime.write();
-            granular.writeParticles(runTime.timePath());
-            vtk.write(granular, runTime.value(), runTime.timeIndex());
-            outputSeconds += clock.timeIncrement();
-
-            Info<< "Time = " << runTime.timeName()
-                << "  sub-steps " << nSub
-                << "  contacts " << s.nContacts << " + " << s.nWallContacts
-                << " walls  max overlap " << s.maxOverlapRatio << " D"
-                << "  kinetic energy " << s.kineticEnergy << " J"
-                << "  ExecutionTime = " << runTime.elapsedCpuTime() << " s"
-                << endl;
-        }
-    }
-
-    const scalar total = granularSeconds + outputSeconds;
-    Info<< nl << "Cost: granular " << granularSeconds << " s ("
-        << 100*granularSeconds/max(total, SMALL) << " %), output "
-        << outputSeconds << " s (" << 100*outputSeconds/max(total, SMALL)
-        << " %); " << nSubTotal << " sub-steps, "
-        << scalar(nSubTotal)*granular.size()/max(granularSeconds, SMALL)
+    const scalar g = scene.granularSeconds(), o = scene.outputSeconds();
+    const scalar total = max(g + o, SMALL);
+    Info<< nl << "Cost: granular " << g << " s (" << 100*g/total
+        << " %), output " << o << " s (" << 100*o/total << " %); "
+        << scene.nSubSteps() << " sub-steps, "
+        << scalar(scene.nSubSteps())*scene.granular().size()/max(g, SMALL)
         << " particle-steps/s" << nl << nl << "End" << nl << endl;
 
     return 0;

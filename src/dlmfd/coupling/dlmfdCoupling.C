@@ -209,7 +209,11 @@ void Foam::dlmfdCoupling::broadcastState()
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::dlmfdCoupling::dlmfdCoupling(const fvMesh& mesh, const vector& g)
+Foam::dlmfdCoupling::dlmfdCoupling
+(
+    const fvMesh& mesh,
+    const sceneEffects& effects
+)
 :
     mesh_(mesh),
     properties_(constantDict(mesh, "dlmfdProperties")),
@@ -220,11 +224,12 @@ Foam::dlmfdCoupling::dlmfdCoupling(const fvMesh& mesh, const vector& g)
             properties_, "fluidDensity", "dlmfdProperties", dimDensity
         )
     ),
-    g_(g),
+    g_(Zero),
     granular_
     (
         IOdictionary(constantDict(mesh, "particleProperties")),
-        IOdictionary(constantDict(mesh, "collisionProperties"))
+        IOdictionary(constantDict(mesh, "collisionProperties")),
+        effects
     ),
     fd_
     (
@@ -242,8 +247,11 @@ Foam::dlmfdCoupling::dlmfdCoupling(const fvMesh& mesh, const vector& g)
     // Walls from the mesh's planar patches, where asked for
     granular_.addWallPatches(mesh);
 
-    // Gravity acts in the predictor (the fluid carries its own weight in
-    // the pressure): the granular corrector has the contacts only
+    // Gravity (effect gravity: constant/g) acts in the predictor (the
+    // fluid carries its own weight in the pressure): the granular
+    // corrector has the contacts only
+    g_ = granular_.readGravity(mesh);
+    Info<< "Gravity " << g_ << " m/s^2" << nl;
     granular_.setGravity(Zero);
 
     // Periodic directions, as the mesh's cyclics and the domain say
@@ -296,7 +304,9 @@ Foam::dlmfdCoupling::dlmfdCoupling(const fvMesh& mesh, const vector& g)
         << "    periods " << fd_.period() << " m (0: not periodic); "
         << (Pstream::parRun() ? "granular step on the master of " : "")
         << (Pstream::parRun() ? Foam::name(Pstream::nProcs()) + " ranks" : "serial")
-        << nl << endl;
+        << nl;
+    granular_.effects().report(Info);
+    Info<< endl;
 
     if (Pstream::master())
     {
@@ -341,13 +351,14 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
         b.shape = &p.shape();
         b.R = p.R();
         b.free = p.motion() == motionKind::free;
+        b.rotates = p.rotates();
         b.excessDensity = densityRatio(i) - 1;
         b.V = V0[i];
         b.omega = omega0[i];
         if (b.free)
         {
             b.V += dt*g_;
-            if (!p.isotropic())
+            if (!p.isotropic() && b.rotates)
             {
                 const tensor J = volumeInertia(i);
                 b.omega -= dt*(inv(J) & (omega0[i] ^ (J & omega0[i])));

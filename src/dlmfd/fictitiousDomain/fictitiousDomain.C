@@ -934,7 +934,9 @@ void Foam::fictitiousDomain::solveBody
         // in 2D only x, y and the rotation about z
         const labelList modes
         (
-            twoD_ ? labelList{0, 1, 5} : labelList{0, 1, 2, 3, 4, 5}
+            twoD_
+          ? (B.rotates ? labelList{0, 1, 5} : labelList{0, 1})
+          : (B.rotates ? labelList{0, 1, 2, 3, 4, 5} : labelList{0, 1, 2})
         );
         const auto mode = [&](const label a, const label k)
         {

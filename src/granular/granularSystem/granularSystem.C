@@ -18,6 +18,9 @@ Description
 #include "narrowPhase.H"
 #include "granularInput.H"
 #include "sphere.H"
+#include "Switch.H"
+#include "uniformDimensionedFields.H"
+#include "objectRegistry.H"
 
 #include <algorithm>
 
@@ -74,8 +77,109 @@ void Foam::granularSystem::readCollision(const dictionary& collisionDict)
         }
     }
 
-    laws_.reset(new contactPairTable(collisionDict, materials_));
-    contactsOn_ = laws_->lawName() != "none";
+    // Periodicity: the domain's directions; a declaration must agree
+    const string domainName = domainDict.name();
+    if
+    (
+        effects_.settle("periodicity", anyPeriodic_, domainName + " periodic")
+     != anyPeriodic_
+    )
+    {
+        effects_.contradiction
+        (
+            "periodicity",
+            "the domain of " + domainName + " has periodic "
+          + (anyPeriodic_ ? "directions " : "none ")
+          + "(periodic (" + Switch::name(periodic_[0]) + ' '
+          + Switch::name(periodic_[1]) + ' ' + Switch::name(periodic_[2])
+          + "))"
+        );
+    }
+
+    // Collisions: off builds no law at all
+    const word lawName = collisionDict.get<word>("contactLaw");
+    collisionMode_ = effects_.settleCollisions
+    (
+        lawName == "none"
+      ? sceneEffects::collisionMode::off
+      : sceneEffects::collisionMode::on,
+        "contactLaw " + lawName
+    );
+    contactsOn_ = collisionMode_ != sceneEffects::collisionMode::off;
+    if (contactsOn_ && lawName == "none")
+    {
+        effects_.contradiction
+        (
+            "collisions",
+            collisionDict.name() + " has contactLaw none; name a law"
+            " (hookeanSpringDashpot, hookeanStaticFriction) and its pairs"
+        );
+    }
+    buildLaws();
+
+    if (!contactsOn_)
+    {
+        effects_.settle("friction", false, "collisions off");
+        effects_.settle("frictionHistory", false, "collisions off");
+        if (effects_.declared("friction") && effects_.on("friction"))
+        {
+            effects_.contradiction("friction", "collisions are off");
+        }
+        if
+        (
+            effects_.declared("frictionHistory")
+         && effects_.on("frictionHistory")
+        )
+        {
+            effects_.contradiction("frictionHistory", "collisions are off");
+        }
+        return;
+    }
+
+    const bool history = laws_->needsHistory();
+    const bool friction = effects_.settle("friction", true, "default");
+    if
+    (
+        effects_.settle("frictionHistory", history, "contactLaw " + lawName)
+     != history
+    )
+    {
+        effects_.contradiction
+        (
+            "frictionHistory",
+            "contactLaw " + lawName + " of " + collisionDict.name()
+          + (
+                history
+              ? " keeps a tangential history; declare it on, or use"
+                " hookeanSpringDashpot"
+              : " keeps none; use hookeanStaticFriction"
+            )
+        );
+    }
+    if (history && !friction)
+    {
+        effects_.contradiction
+        (
+            "friction",
+            "contactLaw " + lawName + " is a friction law with history;"
+            " without friction use hookeanSpringDashpot"
+        );
+    }
+}
+
+
+void Foam::granularSystem::buildLaws()
+{
+    if (!contactsOn_)
+    {
+        laws_.clear();
+        return;
+    }
+    laws_.reset(new contactPairTable(collisionDict_, materials_));
+    if (effects_.settled("friction") && !effects_.on("friction"))
+    {
+        laws_->setTangential(false);
+    }
 }
 
 
@@ -87,6 +191,55 @@ void Foam::granularSystem::updateParticleData()
     Text_.setSize(n, Zero);
     Deq_.setSize(n);
     sphereRadius_.setSize(n);
+
+    // The particles that move, and the effects they touch
+    using motionKind = rigidParticle::motionKind;
+    DynamicList<label> moving(n);
+    label firstHeld = -1;
+    for (label i = 0; i < n; ++i)
+    {
+        rigidParticle& p = particles_[i];
+        if (p.motion() != motionKind::fixed)
+        {
+            moving.append(i);
+        }
+        if (p.motion() != motionKind::free && firstHeld < 0)
+        {
+            firstHeld = i;
+        }
+        if (!rotationOn_ && mag(p.omega()) > 0)
+        {
+            FatalErrorInFunction
+                << "particle " << ids_[i] << " ("
+                << rigidParticle::motionKindNames[p.motion()]
+                << ") has angular velocity " << p.omega()
+                << " but the effect rotation is off" << exit(FatalError);
+        }
+        p.setRotation(rotationOn_);
+    }
+    moving_.transfer(moving);
+    if (n)
+    {
+        if
+        (
+            !effects_.settle
+            (
+                "fixedParticles", firstHeld >= 0, "the particles"
+            )
+         && firstHeld >= 0
+        )
+        {
+            effects_.contradiction
+            (
+                "fixedParticles",
+                "particle " + Foam::name(ids_[firstHeld]) + " at "
+              + Foam::name(particles_[firstHeld].position().x()) + ' '
+              + Foam::name(particles_[firstHeld].position().y()) + ' '
+              + Foam::name(particles_[firstHeld].position().z()) + " is "
+              + rigidParticle::motionKindNames[particles_[firstHeld].motion()]
+            );
+        }
+    }
 
     scalar rMax = 0, Dmin = GREAT;
     for (label i = 0; i < size(); ++i)
@@ -328,6 +481,9 @@ void Foam::granularSystem::addPairForces(const scalar dt)
         rigidParticle& pj = particles_[j];
         const bool iMoves = pi.motion() == motionKind::free;
         const bool jMoves = pj.motion() == motionKind::free;
+        // A fixed particle carries no force (it is in no sub-step pass)
+        const bool iHeld = pi.motion() == motionKind::fixed;
+        const bool jHeld = pj.motion() == motionKind::fixed;
         if (!iMoves && !jMoves)
         {
             continue;
@@ -406,8 +562,14 @@ void Foam::granularSystem::addPairForces(const scalar dt)
                 const vector Fk =
                     (c.depths[k]/sumDepth)
                    *law.force(c.depths[k], c.normal, Uk, M, dt, unused);
-                pi.addForceAt(Fk, pk);
-                pj.addForceAt(-Fk, pk - shift);
+                if (!iHeld)
+                {
+                    pi.addForceAt(Fk, pk);
+                }
+                if (!jHeld)
+                {
+                    pj.addForceAt(-Fk, pk - shift);
+                }
             }
             ++stats_.nContacts;
             stats_.maxOverlapRatio = max
@@ -418,8 +580,14 @@ void Foam::granularSystem::addPairForces(const scalar dt)
         }
         const vector Urel = relativeVelocity(c.position);
         const vector F = contactForce(law, c, Urel, M, dt, pairKey(i, j));
-        pi.addForceAt(F, c.position);
-        pj.addForceAt(-F, c.position - shift);
+        if (!iHeld)
+        {
+            pi.addForceAt(F, c.position);
+        }
+        if (!jHeld)
+        {
+            pj.addForceAt(-F, c.position - shift);
+        }
         if (c.spread > 0)
         {
             const vector T = law.regionTorque
@@ -427,8 +595,14 @@ void Foam::granularSystem::addPairForces(const scalar dt)
                 c.normal, omegai - omegaj,
                 c.spread, M, F & c.normal
             );
-            pi.addTorque(T);
-            pj.addTorque(-T);
+            if (!iHeld)
+            {
+                pi.addTorque(T);
+            }
+            if (!jHeld)
+            {
+                pj.addTorque(-T);
+            }
         }
 
         ++stats_.nContacts;
@@ -448,24 +622,29 @@ void Foam::granularSystem::subStep
 (
     const scalar dt,
     const bool finishPrevious,
-    const bool last
+    const bool last,
+    const bool contacts
 )
 {
     // (1) The previous sub-step's second half kick (same arithmetic as a
     // pass of its own, one sweep over the particles fewer), the first half
     // kick and drift, the start of the force sum, and whether the Verlet
-    // list must be rebuilt
+    // list must be rebuilt. Fixed particles take no part: they never move
+    // and carry no force.
     const bool checkList = contactsOn_ && xAtBuild_.size() == size();
     const scalar limit2 = sqr(0.5*skin_);
+    const bool weight = magSqr(g_) > 0;
+    const label nMoving = moving_.size();
     // The records are read in order, and each fills several cache lines:
     // they are requested a few particles ahead, so that the memory works
     // while the arithmetic does (10^5 free-falling spheres: 6.7 s -> 5.0 s)
-    for (label i = 0; i < size(); ++i)
+    for (label k = 0; k < nMoving; ++k)
     {
-        if (i + ahead < size())
+        if (k + ahead < nMoving)
         {
-            prefetchParticle(i + ahead);
+            prefetchParticle(moving_[k + ahead]);
         }
+        const label i = moving_[k];
         rigidParticle& p = particles_[i];
         if (finishPrevious)
         {
@@ -474,7 +653,10 @@ void Foam::granularSystem::subStep
         p.kickDrift(dt);
         wrapPeriodic(p);
         p.clearForces();
-        p.addForce(p.mass()*g_);
+        if (weight)
+        {
+            p.addForce(p.mass()*g_);
+        }
         if (externalForcesOn_)
         {
             p.addForce(Fext_[i]);
@@ -491,7 +673,7 @@ void Foam::granularSystem::subStep
     }
 
     // (2) Contacts: walls, then pairs
-    if (contactsOn_)
+    if (contacts)
     {
         updateCandidates();
         if (walls_.size())
@@ -514,17 +696,81 @@ void Foam::granularSystem::subStep
         return;
     }
     scalar E = 0;
-    for (label i = 0; i < size(); ++i)
+    for (label k = 0; k < nMoving; ++k)
     {
-        if (i + ahead < size())
+        if (k + ahead < nMoving)
         {
-            prefetchParticle(i + ahead);
+            prefetchParticle(moving_[k + ahead]);
         }
-        rigidParticle& p = particles_[i];
+        rigidParticle& p = particles_[moving_[k]];
         p.kick(dt);
         E += p.kineticEnergy();
     }
     stats_.kineticEnergy = E;
+}
+
+
+bool Foam::granularSystem::contactsPossible(const scalar Deltat)
+{
+    // The list must be current: rebuilt if a particle moved by skin/2
+    // since it was built (the sub-steps' own check)
+    const scalar halfSkin = 0.5*skin_;
+    if (xAtBuild_.size() != size())
+    {
+        rebuildList_ = true;
+    }
+    else
+    {
+        for (const label i : moving_)
+        {
+            if
+            (
+                magSqr
+                (
+                    cells_->separation
+                    (
+                        particles_[i].position(), xAtBuild_[i]
+                    )
+                )
+              > sqr(halfSkin)
+            )
+            {
+                rebuildList_ = true;
+                break;
+            }
+        }
+    }
+    updateCandidates();
+    if (candidates_.size() || nearWalls_.size())
+    {
+        return true;
+    }
+
+    // Nothing within the skin: a contact can only start if a particle
+    // gets skin/2 away from where the list was built, its reach over the
+    // step bounded by its speed and its acceleration (weight and external
+    // force held over the step)
+    for (const label i : moving_)
+    {
+        const rigidParticle& p = particles_[i];
+        vector a = g_;
+        if (externalForcesOn_)
+        {
+            a += Fext_[i]/p.mass();
+        }
+        if (p.motion() != rigidParticle::motionKind::free)
+        {
+            a = Zero;
+        }
+        const scalar reach =
+            mag(cells_->separation(p.position(), xAtBuild_[i]))
+          + mag(p.velocity())*Deltat + 0.5*mag(a)*sqr(Deltat);
+        if (reach > halfSkin)
+        {
+            return true;
+        }
+    }
+    return false;
 }
 
 
@@ -533,7 +779,8 @@ void Foam::granularSystem::subStep
 Foam::granularSystem::granularSystem
 (
     const dictionary& particleDict,
-    const dictionary& collisionDict
+    const dictionary& collisionDict,
+    const sceneEffects& effects
 )
 :
     shapes_(),
@@ -548,7 +795,10 @@ Foam::granularSystem::granularSystem
     subStepsPerContact_(20),
     skin_(-1),
     g_(Zero),
+    effects_(effects),
+    collisionMode_(sceneEffects::collisionMode::on),
     contactsOn_(true),
+    rotationOn_(effects_.settle("rotation", true, "default")),
     externalForcesOn_(false),
     dtMax_(VGREAT),
     rebuildList_(true)
@@ -587,7 +837,7 @@ void Foam::granularSystem::addWalls(const UList<planeWall>& walls)
         wallMaterial_.append(materials_.addWallMaterial(w.material));
     }
     // New wall materials need their pair laws
-    laws_.reset(new contactPairTable(collisionDict_, materials_));
+    buildLaws();
     updateParticleData();
 }
 
@@ -722,6 +972,26 @@ Foam::label Foam::granularSystem::evolve(const scalar Deltat)
 {
     stats_ = statistics();
 
+    if (moving_.empty())
+    {
+        // Nothing moves (no particle, or all fixed): no granular work
+        return 0;
+    }
+
+    // collisions automatic: a step that no contact can reach is one
+    // velocity-Verlet step, with no broad or narrow phase
+    if
+    (
+        collisionMode_ == sceneEffects::collisionMode::automatic
+     && !contactsPossible(Deltat)
+    )
+    {
+        subStep(Deltat, false, true, false);
+        stats_.nSubSteps = 1;
+        stats_.contactsSkipped = true;
+        return 1;
+    }
+
     const label n =
         dtMax_ < VGREAT
       ? max(label(1), label(std::ceil(Deltat/dtMax_*(1 - 1e-12))))
@@ -729,7 +999,7 @@ Foam::label Foam::granularSystem::evolve(const scalar Deltat)
     const scalar dt = Deltat/n;
     for (label k = 0; k < n; ++k)
     {
-        subStep(dt, k > 0, k == n - 1);
+        subStep(dt, k > 0, k == n - 1, contactsOn_);
     }
     stats_.nSubSteps = n;
     return n;

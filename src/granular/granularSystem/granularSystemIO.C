@@ -39,6 +39,10 @@ Description
 #include "OSspecific.H"
 #include "Tuple2.H"
 #include "Map.H"
+#include "OStringStream.H"
+#include "uniformDimensionedFields.H"
+#include "objectRegistry.H"
+#include "Time.H"
 #include <algorithm>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -282,6 +286,51 @@ void Foam::granularSystem::writeParticles(const fileName& dir) const
         FatalErrorInFunction
             << "cannot rename " << tmp << " to " << file << exit(FatalError);
     }
+}
+
+
+
+
+// * * * * * * * * * * * * * * * * Effects  * * * * * * * * * * * * * * * * //
+
+const Foam::vector& Foam::granularSystem::readGravity
+(
+    const objectRegistry& db
+)
+{
+    IOobject header
+    (
+        "g",
+        db.time().constant(),
+        db,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE
+    );
+    const bool present =
+        header.typeHeaderOk<uniformDimensionedVectorField>(true);
+    if (!effects_.settle("gravity", present, "constant/g"))
+    {
+        // Off: the file, if any, must not ask for a weight
+        if (present)
+        {
+            const vector g = uniformDimensionedVectorField(header).value();
+            if (mag(g) > 0)
+            {
+                OStringStream why;
+                why << "constant/g is " << g
+                    << "; remove it or set it to (0 0 0)";
+                effects_.contradiction("gravity", why.str());
+            }
+        }
+        g_ = Zero;
+        return g_;
+    }
+    if (!present)
+    {
+        effects_.contradiction("gravity", "the case has no constant/g");
+    }
+    g_ = uniformDimensionedVectorField(header).value();
+    return g_;
 }
 
 

@@ -49,6 +49,7 @@ Foam::rigidParticle::rigidParticle
     invInertiaIso_(0),
     motion_(motionKind::free),
     planar_(shape.planar()),
+    rotates_(true),
     isotropic_(false),
     rotationInvariant_(shape.rotationInvariant()),
     q_(q),

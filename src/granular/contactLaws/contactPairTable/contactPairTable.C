@@ -115,4 +115,13 @@ bool Foam::contactPairTable::needsHistory() const
 }
 
 
+void Foam::contactPairTable::setTangential(const bool on)
+{
+    forAll(laws_, i)
+    {
+        laws_[i].setTangential(on);
+    }
+}
+
+
 // ************************************************************************* //

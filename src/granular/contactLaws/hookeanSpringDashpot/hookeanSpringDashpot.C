@@ -170,7 +170,7 @@ Foam::vector Foam::contactLaws::hookeanSpringDashpot::regionTorque
 
     // Twist: the tangential dashpot integrated over the region
     const scalar spin = omegaRel & n;
-    scalar Ttwist = -2*gammat(M)*M*r2*spin;
+    scalar Ttwist = tangential_ ? -2*gammat(M)*M*r2*spin : 0;
     const scalar twistCap = muc_*Fpos*spread;
     if (mag(Ttwist) > twistCap)
     {
@@ -206,6 +206,10 @@ Foam::vector Foam::contactLaws::hookeanSpringDashpot::force
     const scalar Un = Urel & n;
     const scalar twoGammanM = 2*dampingRatio_*sqrt(kn_*M);
     const scalar fn = kn_*delta - twoGammanM*Un;
+    if (!tangential_)
+    {
+        return fn*n;
+    }
 
     // Tangential dashpot, capped by Coulomb's limit (eq 22)
     const vector Fdt =
