@@ -115,6 +115,11 @@ void Foam::granularSystem::readCollision(const dictionary& collisionDict)
             " (hookeanSpringDashpot, hookeanStaticFriction) and its pairs"
         );
     }
+    // Friction is settled before the laws are built: they are built with it
+    if (contactsOn_)
+    {
+        effects_.settle("friction", true, "default");
+    }
     buildLaws();
 
     if (!contactsOn_)
@@ -137,7 +142,7 @@ void Foam::granularSystem::readCollision(const dictionary& collisionDict)
     }
 
     const bool history = laws_->needsHistory();
-    const bool friction = effects_.settle("friction", true, "default");
+    const bool friction = effects_.on("friction");
     if
     (
         effects_.settle("frictionHistory", history, "contactLaw " + lawName)
@@ -750,6 +755,37 @@ bool Foam::granularSystem::contactsPossible(const scalar Deltat)
     // gets skin/2 away from where the list was built, its reach over the
     // step bounded by its speed and its acceleration (weight and external
     // force held over the step)
+    if (!reachBeyondHalfSkin(Deltat))
+    {
+        return false;
+    }
+
+    // A list built where the particles are now gives each its whole half
+    // skin for this step (a broad phase is far cheaper than sub-cycling)
+    bool moved = false;
+    for (const label i : moving_)
+    {
+        if (particles_[i].position() != xAtBuild_[i])
+        {
+            moved = true;
+            break;
+        }
+    }
+    if (!moved)
+    {
+        return true;
+    }
+    rebuildList_ = true;
+    updateCandidates();
+    return
+        candidates_.size() || nearWalls_.size()
+     || reachBeyondHalfSkin(Deltat);
+}
+
+
+bool Foam::granularSystem::reachBeyondHalfSkin(const scalar Deltat) const
+{
+    const scalar halfSkin = 0.5*skin_;
     for (const label i : moving_)
     {
         const rigidParticle& p = particles_[i];
