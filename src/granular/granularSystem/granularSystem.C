@@ -306,6 +306,8 @@ void Foam::granularSystem::updateParticleData()
         std::cbrt(domain_.volume()/max(n, label(1)))
     );
     cells_.reset(new linkedCells(domain_, periodic_, cellWidth));
+    cellWidth_ = cellWidth;
+    rMax_ = rMax;
     xAtBuild_.clear();
     rebuildList_ = true;
     history_.clear();
@@ -717,96 +719,63 @@ void Foam::granularSystem::subStep
 
 bool Foam::granularSystem::contactsPossible(const scalar Deltat)
 {
-    // The list must be current: rebuilt if a particle moved by skin/2
-    // since it was built (the sub-steps' own check)
-    const scalar halfSkin = 0.5*skin_;
-    if (xAtBuild_.size() != size())
-    {
-        rebuildList_ = true;
-    }
-    else
-    {
-        for (const label i : moving_)
-        {
-            if
-            (
-                magSqr
-                (
-                    cells_->separation
-                    (
-                        particles_[i].position(), xAtBuild_[i]
-                    )
-                )
-              > sqr(halfSkin)
-            )
-            {
-                rebuildList_ = true;
-                break;
-            }
-        }
-    }
-    updateCandidates();
-    if (candidates_.size() || nearWalls_.size())
-    {
-        return true;
-    }
-
-    // Nothing within the skin: a contact can only start if a particle
-    // gets skin/2 away from where the list was built, its reach over the
-    // step bounded by its speed and its acceleration (weight and external
-    // force held over the step)
-    if (!reachBeyondHalfSkin(Deltat))
-    {
-        return false;
-    }
-
-    // A list built where the particles are now gives each its whole half
-    // skin for this step (a broad phase is far cheaper than sub-cycling)
-    bool moved = false;
-    for (const label i : moving_)
-    {
-        if (particles_[i].position() != xAtBuild_[i])
-        {
-            moved = true;
-            break;
-        }
-    }
-    if (!moved)
-    {
-        return true;
-    }
-    rebuildList_ = true;
-    updateCandidates();
-    return
-        candidates_.size() || nearWalls_.size()
-     || reachBeyondHalfSkin(Deltat);
-}
-
-
-bool Foam::granularSystem::reachBeyondHalfSkin(const scalar Deltat) const
-{
-    const scalar halfSkin = 0.5*skin_;
+    // How far each particle can get over the step, from its speed and its
+    // acceleration (weight and external force held over the step)
+    scalar maxReach = 0;
+    reach_.setSize(size());
+    reach_ = 0;
     for (const label i : moving_)
     {
         const rigidParticle& p = particles_[i];
-        vector a = g_;
-        if (externalForcesOn_)
+        vector a = Zero;
+        if (p.motion() == rigidParticle::motionKind::free)
         {
-            a += Fext_[i]/p.mass();
+            a = g_;
+            if (externalForcesOn_)
+            {
+                a += Fext_[i]/p.mass();
+            }
         }
-        if (p.motion() != rigidParticle::motionKind::free)
+        reach_[i] = mag(p.velocity())*Deltat + 0.5*mag(a)*sqr(Deltat);
+        maxReach = max(maxReach, reach_[i]);
+    }
+
+    // A wall a particle can reach
+    for (const label i : moving_)
+    {
+        if (particles_[i].motion() != rigidParticle::motionKind::free)
         {
-            a = Zero;
+            continue;
         }
-        const scalar reach =
-            mag(cells_->separation(p.position(), xAtBuild_[i]))
-          + mag(p.velocity())*Deltat + 0.5*mag(a)*sqr(Deltat);
-        if (reach > halfSkin)
+        for (const planeWall& w : walls_)
         {
-            return true;
+            if
+            (
+                w.distance(particles_[i].position())
+             <= radius_[i] + reach_[i] + skin_
+            )
+            {
+                return true;
+            }
         }
     }
-    return false;
+
+    // A pair that can touch: the broad phase at the distance two
+    // particles can close over the step (a skin at least), without the
+    // narrow phase. The linked cells find pairs up to a cell apart only:
+    // a reach beyond that is treated as a possible contact.
+    const scalar search = max(skin_, 2*maxReach);
+    if (2*rMax_ + search > cellWidth_)
+    {
+        return true;
+    }
+    positionsNow_.setSize(size());
+    for (label i = 0; i < size(); ++i)
+    {
+        positionsNow_[i] = particles_[i].position();
+    }
+    cells_->findPairs(positionsNow_, radius_, search, reachPairs_);
+    return reachPairs_.size() > 0;
 }
 
 
@@ -837,7 +806,9 @@ Foam::granularSystem::granularSystem
     rotationOn_(effects_.settle("rotation", true, "default")),
     externalForcesOn_(false),
     dtMax_(VGREAT),
-    rebuildList_(true)
+    rebuildList_(true),
+    cellWidth_(0),
+    rMax_(0)
 {
     const dictionary& shapesDict = particleDict.subDict("shapes");
     for (const word& name : shapesDict.toc())
