@@ -63,6 +63,7 @@ Usage
 #include "meanFlowControl.H"
 #include "dlmfdCoupling.H"
 #include "granularRun.H"
+#include "progressLog.H"
 #include "uniformDimensionedFields.H"
 #include "clockTime.H"
 
@@ -108,6 +109,7 @@ int main(int argc, char *argv[])
     // Wall-clock seconds per phase, for the cost line at the end
     clockTime clock;
     scalar fluidSeconds = 0, outputSeconds = 0;
+    progressLog progress(runTime);
 
     while (runTime.run())
     {
@@ -154,6 +156,7 @@ int main(int argc, char *argv[])
         outputSeconds += clock.timeIncrement();
 
         runTime.printExecutionTime(Info);
+        progress.step();
     }
 
     // The cost by phase, on the master: the fluid's own communication is

@@ -18,6 +18,7 @@ License
 #include "Time.H"
 #include "clockTime.H"
 #include "polyMesh.H"
+#include "progressLog.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -128,6 +129,7 @@ void Foam::granularRun::run()
         << " maxOverlapRatio listBuilds cpuTime[s]" << nl;
 
     clockTime clock;
+    progressLog progress(runTime_);
     while (runTime_.run())
     {
         ++runTime_;
@@ -159,6 +161,7 @@ void Foam::granularRun::run()
                 << "  ExecutionTime = " << runTime_.elapsedCpuTime() << " s"
                 << endl;
         }
+        progress.step();
     }
 }
 
