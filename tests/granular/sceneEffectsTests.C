@@ -22,20 +22,15 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "granularSystem.H"
-#include "IStringStream.H"
+#include "testInput.H"
 
 #include <gtest/gtest.h>
 
 using namespace Foam;
+using namespace Foam::testInput;
 
 namespace
 {
-
-dictionary parse(const std::string& text)
-{
-    IStringStream is(text);
-    return dictionary(is);
-}
 
 //- Glass spheres of D = 1 cm (and a cube of the same volume) with a law,
 //- a floor at z = 0 and the declared effects
@@ -66,21 +61,6 @@ autoPtr<granularSystem> makeScene
     (
         particleDict, collisionDict, sceneEffects(parse(effects))
     );
-}
-
-//- The message of the error that running f raises ("" if none)
-template<class F>
-std::string errorOf(F f)
-{
-    try
-    {
-        f();
-    }
-    catch (const Foam::error& e)
-    {
-        return e.message();
-    }
-    return "";
 }
 
 } // End anonymous namespace

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "dlmfdCoupling.H"
+#include "OStringStream.H"
 #include "granularInput.H"
 #include "planeWall.H"
 #include "Time.H"
@@ -165,6 +166,60 @@ Foam::fileName Foam::dlmfdCoupling::readParticles()
 }
 
 
+void Foam::dlmfdCoupling::checkPlanarParticles(const fileName& file) const
+{
+    if (mesh_.nSolutionD() != 2)
+    {
+        return;
+    }
+    // A 2D mesh is one cell deep along z: its particles are prisms
+    // across that cell, their centres inside it
+    const scalar zMin = mesh_.bounds().min().z();
+    const scalar zMax = mesh_.bounds().max().z();
+    OStringStream problems;
+    label nProblems = 0;
+    for (label i = 0; i < granular_.size(); ++i)
+    {
+        const rigidParticle& p = granular_.particle(i);
+        const bool planar = p.shape().planar();
+        const scalar z = p.position().z();
+        if (planar && z >= zMin && z <= zMax)
+        {
+            continue;
+        }
+        if (++nProblems > 10)
+        {
+            continue;
+        }
+        problems
+            << "    particle " << granular_.id(i) << " (" << p.shape().name()
+            << ", " << p.shape().type() << ") at " << p.position();
+        if (!planar)
+        {
+            problems
+                << " is not a planar shape (circle, polygon): a 2D case"
+                << " holds prisms one cell deep";
+        }
+        else
+        {
+            problems
+                << " is off the case's plane: its z must lie between "
+                << zMin << " and " << zMax << " m (the mesh's depth)";
+        }
+        problems << nl;
+    }
+    if (nProblems)
+    {
+        FatalErrorInFunction
+            << file << ": " << nProblems << " particle(s) do not fit the 2D"
+            << " mesh (one cell deep along z):" << nl
+            << problems.str().c_str()
+            << (nProblems > 10 ? "    ... and more\n" : "")
+            << exit(FatalError);
+    }
+}
+
+
 void Foam::dlmfdCoupling::broadcastState()
 {
     if (!Pstream::parRun())
@@ -258,6 +313,7 @@ Foam::dlmfdCoupling::dlmfdCoupling
     setPeriodicity();
 
     const fileName particleFile(readParticles());
+    checkPlanarParticles(particleFile);
     Fh_.setSize(granular_.size(), Zero);
     Th_.setSize(granular_.size(), Zero);
 
@@ -411,6 +467,7 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
             }
         }
         nSub = granular_.evolve(dt);
+        granular_.checkHealth(mesh_.time().value());
     }
     granularSeconds_ += clock.timeIncrement();
 

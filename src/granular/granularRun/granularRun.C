@@ -137,6 +137,7 @@ void Foam::granularRun::run()
         clock.timeIncrement();
         const label nSub = granular.evolve(runTime_.deltaTValue());
         granularSeconds_ += clock.timeIncrement();
+        granular.checkHealth(runTime_.value());
         nSubSteps_ += nSub;
 
         const granularSystem::statistics& s = granular.stats();

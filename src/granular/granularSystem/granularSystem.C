@@ -38,6 +38,16 @@ void Foam::granularSystem::readCollision(const dictionary& collisionDict)
             << exit(FatalIOError);
     }
 
+    overlapLimit_ = collisionDict.getOrDefault<scalar>("overlapLimit", 0.05);
+    if (!(overlapLimit_ > 0 && overlapLimit_ < 1))
+    {
+        FatalIOErrorInFunction(collisionDict)
+            << "overlapLimit = " << overlapLimit_ << " is not allowed;"
+            << " 0 < overlapLimit < 1 (largest overlap over the smaller"
+            << " equivalent diameter; the laws' own design overlaps are"
+            << " 0.001-0.01)" << exit(FatalIOError);
+    }
+
     skin_ = -1;
     if (collisionDict.readIfPresent("skin", skin_) && !(skin_ >= 0))
     {
@@ -421,32 +431,9 @@ void Foam::granularSystem::addWallForces(const label i, const scalar dt)
     for (label k = nearWallStart_[i]; k < nearWallStart_[i + 1]; ++k)
     {
         const label w = nearWalls_[k];
-        const planeWall& wall = walls_[w];
-        if (wall.distance(pi.position()) > radius_[i])
+        if (!wallTouches(i, w, c))
         {
             continue;
-        }
-        if (sphereRadius_[i] > 0)
-        {
-            if
-            (
-                !narrowPhase::spherePlane
-                (
-                    pi.position(), sphereRadius_[i],
-                    wall.origin, wall.normal, c
-                )
-            )
-            {
-                continue;
-            }
-        }
-        else
-        {
-            const posedShape bi{pi.shape(), pi.position(), pi.R()};
-            if (!narrowPhase::shapePlane(bi, wall.origin, wall.normal, c))
-            {
-                continue;
-            }
         }
         vector Ui, omegai;
         pi.predictedVelocities(dt, Ui, omegai);
@@ -467,8 +454,7 @@ void Foam::granularSystem::addWallForces(const label i, const scalar dt)
         }
 
         ++stats_.nWallContacts;
-        stats_.maxOverlapRatio =
-            max(stats_.maxOverlapRatio, c.overlap/Deq_[i]);
+        noteOverlap(i, -1 - w, c.overlap/Deq_[i]);
     }
 }
 
@@ -496,39 +482,12 @@ void Foam::granularSystem::addPairForces(const scalar dt)
             continue;
         }
 
-        const vector d = cells_->separation(pi.position(), pj.position());
-        if (magSqr(d) > sqr(radius_[i] + radius_[j]))
+        point xjImage;
+        if (!pairTouches(i, j, c, xjImage))
         {
             continue;
         }
-        // The partner's image nearest to i
-        const point xjImage = pi.position() - d;
         const vector shift = xjImage - pj.position();
-
-        if (sphereRadius_[i] > 0 && sphereRadius_[j] > 0)
-        {
-            // The common case first, without asking the shapes
-            if
-            (
-                !narrowPhase::sphereSphere
-                (
-                    pi.position(), sphereRadius_[i],
-                    xjImage, sphereRadius_[j], c
-                )
-            )
-            {
-                continue;
-            }
-        }
-        else
-        {
-            const posedShape bi{pi.shape(), pi.position(), pi.R()};
-            const posedShape bj{pj.shape(), xjImage, pj.R()};
-            if (!narrowPhase::shapeShape(bi, bj, c))
-            {
-                continue;
-            }
-        }
 
         const scalar M =
             !iMoves ? pj.mass()
@@ -579,10 +538,7 @@ void Foam::granularSystem::addPairForces(const scalar dt)
                 }
             }
             ++stats_.nContacts;
-            stats_.maxOverlapRatio = max
-            (
-                stats_.maxOverlapRatio, c.overlap/min(Deq_[i], Deq_[j])
-            );
+            noteOverlap(i, j, c.overlap/min(Deq_[i], Deq_[j]));
             continue;
         }
         const vector Urel = relativeVelocity(c.position);
@@ -613,10 +569,7 @@ void Foam::granularSystem::addPairForces(const scalar dt)
         }
 
         ++stats_.nContacts;
-        stats_.maxOverlapRatio = max
-        (
-            stats_.maxOverlapRatio, c.overlap/min(Deq_[i], Deq_[j])
-        );
+        noteOverlap(i, j, c.overlap/min(Deq_[i], Deq_[j]));
     }
 
     // Contacts that ended lose their history
@@ -798,6 +751,7 @@ Foam::granularSystem::granularSystem
     periodic_(false),
     anyPeriodic_(false),
     subStepsPerContact_(20),
+    overlapLimit_(0.05),
     skin_(-1),
     g_(Zero),
     effects_(effects),

@@ -214,6 +214,7 @@ void Foam::granularSystem::readParticles
                 c.second();
         }
     }
+    checkStart(file);
 }
 
 

@@ -32,13 +32,9 @@ Foam::meanFlowControl::meanFlowControl
     const IOobject::readOption gradPReadOption
 )
 :
-    functionObjects::writeFile
-    (
-        mesh,
-        "meanFlowControl",
-        "meanFlowControl",
-        coeffs
-    ),
+    // The file is opened at the first log, not here: a run that stops on
+    // bad input before its first step leaves no output behind
+    functionObjects::writeFile(mesh, "meanFlowControl", "meanFlowControl"),
     mesh_(mesh),
     coeffs_(coeffs),
     gradP_
@@ -55,18 +51,8 @@ Foam::meanFlowControl::meanFlowControl
         dimensionedVector(dimVelocity/dimTime, Zero)
     )
 {
-    // writeFile has opened the file (on the master only)
-    if (writeToFile())
-    {
-        OFstream& os = file();
-        writeHeader(os, "Mean flow control: " + coeffs.dictName());
-        writeCommented(os, "Time");
-        for (const word col : {"Ux", "Uy", "Uz", "gradPx", "gradPy", "gradPz"})
-        {
-            writeTabbed(os, col);
-        }
-        os  << endl;
-    }
+    // writeToFile (on the master only), writePrecision
+    writeFile::read(coeffs);
 }
 
 
@@ -86,9 +72,25 @@ void Foam::meanFlowControl::log(const volVectorField& U)
     Info<< "meanFlowControl " << type() << ": bulk U = " << Ubulk
         << ", gradP = " << gradP_.value() << endl;
 
-    // writeFile opens its stream on the master only
+    // writeFile writes on the master only
     if (writeToFile())
     {
+        if (!filePtr_.valid())
+        {
+            resetFile("meanFlowControl");
+            OFstream& os = file();
+            writeHeader(os, "Mean flow control: " + coeffs_.dictName());
+            writeCommented(os, "Time");
+            for
+            (
+                const word col
+              : {"Ux", "Uy", "Uz", "gradPx", "gradPy", "gradPz"}
+            )
+            {
+                writeTabbed(os, col);
+            }
+            os  << endl;
+        }
         OFstream& os = file();
         writeCurrentTime(os);
         os  << tab << Ubulk.x() << tab << Ubulk.y() << tab << Ubulk.z()
