@@ -63,6 +63,7 @@ Usage
 #include "meanFlowControl.H"
 #include "dlmfdCoupling.H"
 #include "granularRun.H"
+#include "restartableTime.H"
 #include "progressLog.H"
 #include "uniformDimensionedFields.H"
 #include "clockTime.H"
@@ -82,7 +83,10 @@ int main(int argc, char *argv[])
 
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
-    #include "createTime.H"
+    Info<< "Create time\n" << endl;
+    // As createTime.H, restoring a restart's exact time state and
+    // writing before a stop on SIGINT/SIGTERM
+    restartableTime runTime(Time::controlDictName, args);
 
     // The effects the scene declares (constant/sceneProperties): a dry
     // scene (fluid off) makes no fluid field at all

@@ -45,6 +45,7 @@ Usage
 #include "argList.H"
 #include "Time.H"
 #include "granularRun.H"
+#include "restartableTime.H"
 
 using namespace Foam;
 
@@ -59,7 +60,10 @@ int main(int argc, char *argv[])
     argList::noParallel();
 
     #include "setRootCase.H"
-    #include "createTime.H"
+    Info<< "Create time\n" << endl;
+    // As createTime.H, restoring a restart's exact time state and
+    // writing before a stop on SIGINT/SIGTERM
+    restartableTime runTime(Time::controlDictName, args);
 
     sceneEffects effects(sceneEffects::read(runTime));
     if (effects.settle("fluid", false, "granularFoam"))

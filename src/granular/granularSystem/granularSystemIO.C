@@ -94,6 +94,7 @@ void Foam::granularSystem::readParticles
     materialOf_.clear();
 
     ITstream& is = dict.lookup("particles");
+    is.format(IOstream::ASCII);
     Map<label> seen;
 
     is.readBegin("particles");
@@ -199,7 +200,11 @@ void Foam::granularSystem::readParticles
     // Contact history, for the laws that keep one
     if (dict.found("contacts"))
     {
-        List<Tuple2<labelPair, vector>> contacts(dict.lookup("contacts"));
+        // Text, also when the dictionary came from the master through a
+        // binary stream (a FixedList would be read raw)
+        ITstream& cs = dict.lookup("contacts");
+        cs.format(IOstream::ASCII);
+        List<Tuple2<labelPair, vector>> contacts(cs);
         for (const auto& c : contacts)
         {
             const label i = c.first().first(), j = c.first().second();

@@ -1,0 +1,203 @@
+/*---------------------------------------------------------------------------*\
+  dlmfdFoam: DLM/FD particle-resolved simulation of particulate flows
+-------------------------------------------------------------------------------
+License
+    This file is part of dlmfdFoam, an extension of OpenFOAM.
+
+    dlmfdFoam is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by the
+    Free Software Foundation, either version 3 of the License, or (at your
+    option) any later version. See <http://www.gnu.org/licenses/>.
+
+\*---------------------------------------------------------------------------*/
+
+#include "restartableTime.H"
+#include "IFstream.H"
+#include "OFstream.H"
+#include "OSspecific.H"
+#include "Pstream.H"
+#include "dictionary.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+volatile std::sig_atomic_t Foam::restartableTime::stopSignal_ = 0;
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::restartableTime::noteSignal(int sig)
+{
+    stopSignal_ = sig;
+}
+
+
+void Foam::restartableTime::catchSignals()
+{
+    struct sigaction action;
+    action.sa_handler = noteSignal;
+    sigemptyset(&action.sa_mask);
+    action.sa_flags = 0;
+    for (const int sig : {SIGINT, SIGTERM})
+    {
+        if (sigaction(sig, &action, nullptr) < 0)
+        {
+            FatalErrorInFunction
+                << "cannot set the handler of signal " << sig
+                << exit(FatalError);
+        }
+    }
+}
+
+
+void Foam::restartableTime::restoreState()
+{
+    const fileName file(timePath()/"uniform"/"restartState");
+    if (!isFile(file))
+    {
+        return;
+    }
+    IFstream is(file);
+    const dictionary dict(is);
+    const string name(dict.get<string>("name"));
+    if (name != timeName())
+    {
+        WarningInFunction
+            << file << " belongs to time " << name.c_str()
+            << ", not to " << timeName() << ": not restored; the restart"
+            << " continues, not bitwise" << endl;
+        return;
+    }
+    setTime(dict.get<scalar>("value"), timeIndex());
+    if (controlDict().getOrDefault("adjustTimeStep", false))
+    {
+        deltaT_ = dict.get<scalar>("deltaT");
+        deltaTSave_ = deltaT_;
+    }
+    deltaT0_ = dict.get<scalar>("deltaT0");
+
+    // Writes counted from the first run's start, while the interval is
+    // the same
+    if (dict.get<scalar>("writeInterval") == writeInterval_)
+    {
+        anchor_ = dict.get<scalar>("anchor");
+        writesBeforeStart_ = label
+        (
+            std::floor((startTime_ - anchor_)/writeInterval_ + 0.5)
+        );
+    }
+    Info<< "Restart state of time " << timeName() << " restored (t = "
+        << value() << ", deltaT " << deltaT_ << ", writes counted from "
+        << anchor_ << ")" << nl << endl;
+}
+
+
+bool Foam::restartableTime::writeState() const
+{
+    const fileName dir(timePath()/"uniform");
+    mkDir(dir);
+    OFstream os(dir/"restartState");
+    os.precision(17);
+    os  << "// The exact time state, for a bitwise restart (restartableTime)"
+        << nl
+        << "name            \"" << timeName() << "\";" << nl
+        << "value           " << value() << ';' << nl
+        << "deltaT          " << deltaT_ << ';' << nl
+        << "deltaT0         " << deltaT0_ << ';' << nl
+        << "anchor          " << anchor_ << ';' << nl
+        << "writeInterval   " << writeInterval_ << ';' << nl;
+    return os.good();
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::restartableTime::restartableTime
+(
+    const word& ctrlDictName,
+    const argList& args
+)
+:
+    Time(ctrlDictName, args),
+    anchor_(startTime_),
+    writesBeforeStart_(0)
+{
+    restoreState();
+    catchSignals();
+    if (writeFormat() == IOstream::ASCII && IOstream::defaultPrecision() < 17)
+    {
+        Info<< "Note: fields are written in ascii at writePrecision "
+            << IOstream::defaultPrecision() << ": a restart continues to"
+            << " that precision; binary, or writePrecision 17, restarts"
+            << " bitwise" << nl << endl;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::restartableTime::setDeltaT(const scalar deltaT, const bool adjust)
+{
+    Time::setDeltaT(deltaT, false);
+    if (!adjust)
+    {
+        return;
+    }
+    if (writeControl_ == wcAdjustableRunTime)
+    {
+        // As Time::adjustDeltaT, with the writes counted from the anchor:
+        // the same arithmetic in a run and in its restart
+        const scalar timeToNextWrite = max
+        (
+            scalar(0),
+            (writesBeforeStart_ + writeTimeIndex_ + 1)*writeInterval_
+          - (value() - anchor_)
+        );
+        const scalar nSteps = timeToNextWrite/deltaT_;
+        if (nSteps < labelMax)
+        {
+            const label n = max(label(1), label(std::round(nSteps)));
+            const scalar newDeltaT = timeToNextWrite/n;
+            // At most twice as long, at least a fifth as long (as Time)
+            deltaT_ =
+                newDeltaT >= deltaT_
+              ? min(newDeltaT, 2*deltaT_)
+              : max(newDeltaT, 0.2*deltaT_);
+        }
+    }
+    functionObjects().adjustTimeStep();
+}
+
+
+bool Foam::restartableTime::writeObject
+(
+    IOstream::streamFormat fmt,
+    IOstream::versionNumber ver,
+    IOstream::compressionType cmp,
+    const bool valid
+) const
+{
+    // A signal on any rank stops every rank at this step, written
+    label signal = stopSignal_;
+    reduce(signal, maxOp<label>());
+    if (signal)
+    {
+        Info<< nl << "Signal " << signal << " ("
+            << (signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "")
+            << "): writing time " << timeName() << " and stopping" << nl
+            << endl;
+        restartableTime& self = const_cast<restartableTime&>(*this);
+        self.writeTime_ = true;
+        stopAt(saWriteNow);
+        endTime_ = value();
+    }
+
+    bool ok = Time::writeObject(fmt, ver, cmp, valid);
+    if (ok && writeTime())
+    {
+        ok = writeState();
+    }
+    return ok;
+}
+
+
+// ************************************************************************* //
