@@ -37,7 +37,7 @@ void Foam::restartableTime::catchSignals()
     action.sa_handler = noteSignal;
     sigemptyset(&action.sa_mask);
     action.sa_flags = 0;
-    for (const int sig : {SIGINT, SIGTERM})
+    for (const int sig : {SIGINT, SIGTERM, SIGUSR1})
     {
         if (sigaction(sig, &action, nullptr) < 0)
         {
@@ -182,7 +182,11 @@ bool Foam::restartableTime::writeObject
     if (signal)
     {
         Info<< nl << "Signal " << signal << " ("
-            << (signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "")
+            << (
+                   signal == SIGINT ? "SIGINT"
+                 : signal == SIGTERM ? "SIGTERM"
+                 : signal == SIGUSR1 ? "SIGUSR1" : "?"
+               )
             << "): writing time " << timeName() << " and stopping" << nl
             << endl;
         restartableTime& self = const_cast<restartableTime&>(*this);
