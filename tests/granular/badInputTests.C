@@ -211,6 +211,41 @@ TEST(badInput, particleFileContactOfAMissingParticleIsRefused)
 }
 
 
+TEST(badInput, particleFileThatIsNotTextNamesItsLine)
+{
+    expectHas
+    (
+        readError("particles (\n(0 ball glass free (0 0 0.05) (1 0 0 0))\n\x01);"),
+        {"particles\" line 3", "character code 1 is not ASCII text"}
+    );
+    // Any text in comments
+    EXPECT_EQ
+    (
+        readError
+        (
+            "// r\xc3\xa9sum\xc3\xa9 \x01\nparticles (\n/* \xe2\x80\x94 */"
+            "(0 ball glass free (0 0 0.05) (1 0 0 0))\n);"
+        ),
+        ""
+    );
+}
+
+
+TEST(badInput, quotedKeywordWithSpacesIsNotFatal)
+{
+    // OpenFOAM would end the program on "invalid fileName" (found by
+    // tests/fuzz): the keyword is refused as any unknown entry instead
+    EXPECT_EQ
+    (
+        readError
+        (
+            "\"  \" 0;\nparticles (\n(0 ball glass free (0 0 0.05) (1 0 0 0))\n);"
+        ),
+        ""
+    );
+}
+
+
 // * * * * * * * * * * * * * * * Starting state  * * * * * * * * * * * * * * //
 
 TEST(badInput, overlappingParticlesAreNamedWithPositions)
