@@ -143,7 +143,23 @@ Foam::dictionary Foam::granularSystem::parseParticleText
     IStringStream is(text);
     is.name() = name;
     is.lineNumber() = 1;    // as a file's (a string stream counts from 0)
-    return dictionary(is);
+    dictionary dict(is);
+
+    // A quoted keyword is a regular expression to OpenFOAM, matched
+    // against every keyword looked up: a pathological one takes minutes
+    // (found by tests/fuzz). A particle file has none.
+    for (const entry& e : dict)
+    {
+        if (e.keyword().isPattern())
+        {
+            FatalIOErrorInFunction(dict)
+                << name << " line " << e.startLineNumber() << ": keyword \""
+                << e.keyword().c_str() << "\" is a pattern (a quoted"
+                << " keyword); a particle file has plain keywords only"
+                << " (particles, contacts)" << exit(FatalIOError);
+        }
+    }
+    return dict;
 }
 
 
