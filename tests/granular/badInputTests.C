@@ -231,7 +231,7 @@ TEST(badInput, particleFileThatIsNotTextNamesItsLine)
 }
 
 
-TEST(badInput, quotedKeywordIsRefusedWithItsLine)
+TEST(badInput, quotedKeywordIsRefused)
 {
     // OpenFOAM would end the program on "invalid fileName" for a quoted
     // keyword with a space, and take minutes to match a pathological one
@@ -249,9 +249,24 @@ TEST(badInput, quotedKeywordIsRefusedWithItsLine)
                 "\n" + std::string(key)
               + " 0;\nparticles (\n(0 ball glass free (0 0 0.05) (1 0 0 0))\n);"
             ),
-            {"line 2", "is a pattern (a quoted keyword)"}
+            {"particles\": keyword", "is a pattern (a quoted keyword)"}
         );
     }
+}
+
+
+TEST(badInput, repeatedKeywordIsRead)
+{
+    // The later one wins, as in any OpenFOAM dictionary (a repeated keyword
+    // once made the reader walk a freed entry: tests/fuzz, "s;s;")
+    EXPECT_EQ
+    (
+        readError
+        (
+            "s;\ns;\na 1;\na 2;\nparticles (\n(0 ball glass free (0 0 0.05) (1 0 0 0))\n);"
+        ),
+        ""
+    );
 }
 
 

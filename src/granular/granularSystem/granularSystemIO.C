@@ -147,17 +147,17 @@ Foam::dictionary Foam::granularSystem::parseParticleText
 
     // A quoted keyword is a regular expression to OpenFOAM, matched
     // against every keyword looked up: a pathological one takes minutes
-    // (found by tests/fuzz). A particle file has none.
-    for (const entry& e : dict)
+    // (found by tests/fuzz). A particle file has none. The keys are asked
+    // of the dictionary (keys(true), in libOpenFOAM), not by walking its
+    // list here: after a repeated keyword has replaced an entry, walking
+    // the list from this side read a freed entry (valgrind, tests/fuzz)
+    const List<keyType> patterns(dict.keys(true));
+    if (patterns.size())
     {
-        if (e.keyword().isPattern())
-        {
-            FatalIOErrorInFunction(dict)
-                << name << " line " << e.startLineNumber() << ": keyword \""
-                << e.keyword().c_str() << "\" is a pattern (a quoted"
-                << " keyword); a particle file has plain keywords only"
-                << " (particles, contacts)" << exit(FatalIOError);
-        }
+        FatalIOErrorInFunction(dict)
+            << name << ": keyword \"" << patterns[0].c_str() << "\" is a"
+            << " pattern (a quoted keyword); a particle file has plain"
+            << " keywords only (particles, contacts)" << exit(FatalIOError);
     }
     return dict;
 }
