@@ -22,7 +22,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "granularSystem.H"
-#include "IStringStream.H"
+#include "testInput.H"
 #include "error.H"
 
 #include <cstdint>
@@ -30,15 +30,10 @@ Description
 #include <string>
 
 using namespace Foam;
+using Foam::testInput::parse;
 
 namespace
 {
-
-dictionary parse(const std::string& text)
-{
-    IStringStream is(text);
-    return dictionary(is);
-}
 
 granularSystem& scene()
 {

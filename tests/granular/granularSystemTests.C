@@ -20,7 +20,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "granularSystem.H"
-#include "IStringStream.H"
+#include "testInput.H"
 #include "OSspecific.H"
 #include "OFstream.H"
 #include "mathematicalConstants.H"
@@ -28,15 +28,11 @@ Description
 #include <gtest/gtest.h>
 
 using namespace Foam;
+using Foam::testInput::parse;
 
 namespace
 {
 
-dictionary parse(const std::string& text)
-{
-    IStringStream is(text);
-    return dictionary(is);
-}
 
 //- Glass particles of diameter D, a law, walls and a domain
 autoPtr<granularSystem> makeSystem

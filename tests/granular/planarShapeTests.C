@@ -21,21 +21,17 @@ Description
 #include "convexPolygon.H"
 #include "narrowPhase.H"
 #include "granularSystem.H"
-#include "IStringStream.H"
+#include "testInput.H"
 #include "Random.H"
 #include "mathematicalConstants.H"
 
 #include <gtest/gtest.h>
 
 using namespace Foam;
+using Foam::testInput::parse;
 
 namespace
 {
-    dictionary parse(const std::string& text)
-    {
-        IStringStream is(text);
-        return dictionary(is);
-    }
 
     const scalar pi = constant::mathematical::pi;
 }

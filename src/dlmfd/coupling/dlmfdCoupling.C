@@ -13,6 +13,7 @@ License
 
 #include "dlmfdCoupling.H"
 #include "OStringStream.H"
+#include "problemList.H"
 #include "granularInput.H"
 #include "planeWall.H"
 #include "Time.H"
@@ -176,8 +177,7 @@ void Foam::dlmfdCoupling::checkPlanarParticles(const fileName& file) const
     // across that cell, their centres inside it
     const scalar zMin = mesh_.bounds().min().z();
     const scalar zMax = mesh_.bounds().max().z();
-    OStringStream problems;
-    label nProblems = 0;
+    problemList problems;
     for (label i = 0; i < granular_.size(); ++i)
     {
         const rigidParticle& p = granular_.particle(i);
@@ -187,35 +187,27 @@ void Foam::dlmfdCoupling::checkPlanarParticles(const fileName& file) const
         {
             continue;
         }
-        if (++nProblems > 10)
-        {
-            continue;
-        }
-        problems
-            << "    particle " << granular_.id(i) << " (" << p.shape().name()
+        OStringStream os;
+        os  << "particle " << granular_.id(i) << " (" << p.shape().name()
             << ", " << p.shape().type() << ") at " << p.position();
         if (!planar)
         {
-            problems
-                << " is not a planar shape (circle, polygon): a 2D case"
+            os  << " is not a planar shape (circle, polygon): a 2D case"
                 << " holds prisms one cell deep";
         }
         else
         {
-            problems
-                << " is off the case's plane: its z must lie between "
+            os  << " is off the case's plane: its z must lie between "
                 << zMin << " and " << zMax << " m (the mesh's depth)";
         }
-        problems << nl;
+        problems.add(os.str());
     }
-    if (nProblems)
+    if (problems.size())
     {
         FatalErrorInFunction
-            << file << ": " << nProblems << " particle(s) do not fit the 2D"
-            << " mesh (one cell deep along z):" << nl
-            << problems.str().c_str()
-            << (nProblems > 10 ? "    ... and more\n" : "")
-            << exit(FatalError);
+            << file << ": " << problems.size() << " particle(s) do not fit"
+            << " the 2D mesh (one cell deep along z):" << nl
+            << problems.str().c_str() << exit(FatalError);
     }
 }
 

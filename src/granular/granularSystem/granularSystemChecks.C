@@ -20,6 +20,7 @@ Description
 
 #include "granularSystem.H"
 #include "OStringStream.H"
+#include "problemList.H"
 #include <cmath>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -27,41 +28,6 @@ Description
 namespace
 {
     using namespace Foam;
-
-    //- The problems of a state, the first few of them listed in full
-    class problemList
-    {
-        static constexpr label listed_ = 10;
-        OStringStream text_;
-        label count_ = 0;
-
-    public:
-
-        void add(const std::string& line)
-        {
-            if (count_ < listed_)
-            {
-                text_ << "    " << line.c_str() << nl;
-            }
-            ++count_;
-        }
-
-        label size() const
-        {
-            return count_;
-        }
-
-        std::string str() const
-        {
-            std::string s(text_.str());
-            if (count_ > listed_)
-            {
-                s += "    ... and " + std::to_string(count_ - listed_)
-                   + " more\n";
-            }
-            return s;
-        }
-    };
 
     std::string str(const point& x)
     {
@@ -120,21 +86,6 @@ void Foam::granularSystem::checkStart(const fileName& file)
     {
         const rigidParticle& p = particles_[i];
         const point& x = p.position();
-        if
-        (
-            !finite(x) || !finite(p.velocity()) || !finite(p.omega())
-         || !finite(p.force()) || !finite(p.torque())
-        )
-        {
-            problems.add
-            (
-                "particle " + std::to_string(ids_[i]) + " has a value that"
-                " is not finite (position " + str(x) + ", velocity "
-              + str(p.velocity()) + ", angular velocity " + str(p.omega())
-              + ")"
-            );
-            continue;
-        }
         for (direction d = 0; d < 3; ++d)
         {
             if (!periodic_[d] && !(x[d] >= lo[d] && x[d] <= hi[d]))
