@@ -11,8 +11,8 @@ License
 
 Description
     libFuzzer target of the particle-file reader: each input is read as a
-    particle file (granularSystem::parseParticleText: the check for
-    control characters and OpenFOAM's dictionary parser; then
+    particle file (particleFileReader: the check for control characters,
+    OpenFOAM's tokenizer and the check of the file's structure; then
     granularSystem::readParticles with its checks of the starting state)
     into a scene of spheres, cubes, tetrahedra and circles, a floor and a
     periodic direction. Bad input must end in an OpenFOAM error (thrown
@@ -22,6 +22,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "granularSystem.H"
+#include "particleFileReader.H"
 #include "testInput.H"
 #include "error.H"
 
@@ -79,7 +80,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     try
     {
         const fileName name("fuzz/particles");
-        sys.readParticles(granularSystem::parseParticleText(text, name), name);
+        sys.readParticles(particleFileReader::parse(text, name), name);
     }
     catch (const Foam::error&)
     {

@@ -31,7 +31,9 @@ Description
 #include "OSspecific.H"
 
 #include <gtest/gtest.h>
+#include <fstream>
 #include <limits>
+#include <sstream>
 
 using namespace Foam;
 using namespace Foam::testInput;
@@ -249,24 +251,151 @@ TEST(badInput, quotedKeywordIsRefused)
                 "\n" + std::string(key)
               + " 0;\nparticles (\n(0 ball glass free (0 0 0.05) (1 0 0 0))\n);"
             ),
-            {"particles\": keyword", "is a pattern (a quoted keyword)"}
+            {"particles\" line 2: keyword", "is a pattern (a quoted keyword)"}
         );
     }
 }
 
 
-TEST(badInput, repeatedKeywordIsRead)
+TEST(badInput, repeatedKeywordIsRefusedWithBothLines)
 {
-    // The later one wins, as in any OpenFOAM dictionary (a repeated keyword
-    // once made the reader walk a freed entry: tests/fuzz, "s;s;")
-    EXPECT_EQ
+    // OpenFOAM takes the later one; a particle file written twice into
+    // (or a copy and paste) would lose particles without a word. A
+    // repeated keyword also made libOpenFOAM v1912 read freed memory
+    // (tests/fuzz: "s;s;", a repeated FoamFile header)
+    expectHas
     (
         readError
         (
-            "s;\ns;\na 1;\na 2;\nparticles (\n(0 ball glass free (0 0 0.05) (1 0 0 0))\n);"
+            "particles (\n(0 ball glass free (0 0 0.05) (1 0 0 0))\n);\n"
+            "particles (\n(1 ball glass free (0 0 0.08) (1 0 0 0))\n);"
         ),
-        ""
+        {"particles\" line 4", "keyword particles is given twice",
+         "first at line 1"}
     );
+    expectHas
+    (
+        readError
+        (
+            "FoamFile { version 2.0; version 2.0; }\n"
+            "particles (\n(0 ball glass free (0 0 0.05) (1 0 0 0))\n);"
+        ),
+        {"line 1", "keyword version is given twice"}
+    );
+}
+
+
+TEST(badInput, unknownKeywordListsTheKeywords)
+{
+    // A misspelt contacts would drop the contact history silently
+    expectHas
+    (
+        readError
+        (
+            "particles (\n(0 ball glass free (0 0 0.05) (1 0 0 0))\n);\n"
+            "contacs ();"
+        ),
+        {"line 4", "keyword contacs is not one of", "FoamFile",
+         "particles", "contacts"}
+    );
+}
+
+
+TEST(badInput, entryStructureErrorsNameTheirLines)
+{
+    const std::string p =
+        "particles (\n(0 ball glass free (0 0 0.05) (1 0 0 0))\n)";
+    // No ';' at the end
+    expectHas(readError(p), {"keyword particles (line 1)", "ends before its ';'"});
+    // An unclosed bracket
+    expectHas
+    (
+        readError("particles (\n(0 ball glass free (0 0 0.05) (1 0 0 0)\n);"),
+        {"ends before its ';'", "'(' of line 1 is not closed"}
+    );
+    // A bracket that closes the wrong one
+    expectHas
+    (
+        readError("particles (\n(0 ball glass free (0 0 0.05] (1 0 0 0))\n);"),
+        {"line 2", "']' does not close '('"}
+    );
+    // A keyword without a value
+    expectHas(readError("contacts;\n" + p + ";"), {"line 1", "contacts has no value"});
+    // A header that is not a sub-dictionary, or holds one
+    expectHas(readError("FoamFile 2;\n" + p + ";"), {"expected '{' after FoamFile"});
+    expectHas
+    (
+        readError("FoamFile { a { b 1; } }\n" + p + ";"),
+        {"FoamFile entry a is a sub-dictionary"}
+    );
+    expectHas(readError("FoamFile { version 2.0;\n" + p + ";"), {"ends before its '}'"});
+    // A value where a keyword belongs
+    expectHas(readError("12;\n" + p + ";"), {"line 1", "expected a keyword"});
+}
+
+
+TEST(badInput, directivesAndVariablesAreRefused)
+{
+    const std::string p =
+        "particles (\n(0 ball glass free (0 0 0.05) (1 0 0 0))\n);";
+    expectHas
+    (
+        readError("#include \"other\"\n" + p),
+        {"line 1", "directive #include is not taken"}
+    );
+    expectHas
+    (
+        readError("particles (\n(0 ball glass free (0 0 $z) (1 0 0 0))\n);"),
+        {"line 2", "is not taken in a particle file"}
+    );
+    expectHas(readError("$p;\n" + p), {"line 1", "variable $p is not taken"});
+    expectHas
+    (
+        readError("particles #{ (0 ball) #};\n"),
+        {"line 1", "is not taken in a particle file"}
+    );
+}
+
+
+TEST(badInput, typedListIsRefusedWithItsLine)
+{
+    // OpenFOAM's tokenizer reads List<word> as a typed list, and leaks a
+    // malformed one when its error is caught (tests/fuzz ran out of memory)
+    expectHas
+    (
+        readError
+        (
+            "particles (\n(0 ball glass free (0 0 0.05) (1 0 0 0))\n);\n"
+            "contacts List<word> 403(a b;"
+        ),
+        {"particles\" line 4: character '<' is not taken"}
+    );
+}
+
+
+TEST(badInput, malformedHeadersFoundByFuzzingAreRefused)
+{
+    // Inputs on which libOpenFOAM's dictionary parser read freed memory
+    // (tests/fuzz/regressions): each ends in an error naming its line
+    for
+    (
+        const char* finding
+      : {"heapUseAfterFree-dictionaryRemoveFoamFile",
+         "heapUseAfterFree-dictionaryParse", "heapUseAfterFree-minimal",
+         "outOfMemory-typedListLeak"}
+    )
+    {
+        const fileName file
+        (
+            fileName(DLMFD_TEST_SOURCE_DIR)/"fuzz"/"regressions"/finding
+        );
+        std::ifstream ifs(file, std::ios::binary);
+        ASSERT_TRUE(ifs.good()) << file;
+        std::ostringstream text;
+        text << ifs.rdbuf();
+        SCOPED_TRACE(finding);
+        expectHas(readError(text.str()), {"particles\" line"});
+    }
 }
 
 
@@ -381,7 +510,7 @@ TEST(badInput, numberBeyondDoubleRangeIsReportedWithItsLine)
         (
             "particles (\n(1 ball glass free (0 0 0.05) (1 0 0 0) (1e400 0 0))\n);"
         ),
-        {"ill defined", "on line 1"}
+        {"particles\" line 2: cannot read 1e400", "beyond double range"}
     );
 }
 

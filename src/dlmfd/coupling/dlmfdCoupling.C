@@ -15,6 +15,7 @@ License
 #include "OStringStream.H"
 #include "problemList.H"
 #include "granularInput.H"
+#include "particleFileReader.H"
 #include "planeWall.H"
 #include "Time.H"
 #include "cyclicPolyPatch.H"
@@ -158,7 +159,7 @@ Foam::fileName Foam::dlmfdCoupling::readParticles()
                 << "    Place particles with placeParticles, or copy them"
                 << " from 0.orig" << exit(FatalError);
         }
-        dict = granularSystem::readParticleFile(file);
+        dict = particleFileReader::read(file);
     }
     Pstream::scatter(file);
     Pstream::scatter(dict);

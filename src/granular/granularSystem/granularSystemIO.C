@@ -33,6 +33,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "granularSystem.H"
+#include "particleFileReader.H"
 #include "IFstream.H"
 #include "OFstream.H"
 #include "IOobject.H"
@@ -43,10 +44,7 @@ Description
 #include "uniformDimensionedFields.H"
 #include "objectRegistry.H"
 #include "Time.H"
-#include "IStringStream.H"
 #include <algorithm>
-#include <fstream>
-#include <sstream>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -66,121 +64,9 @@ namespace
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::dictionary Foam::granularSystem::parseParticleText
-(
-    const std::string& text,
-    const fileName& name
-)
-{
-    // ASCII text outside comments: OpenFOAM's tokenizer takes control
-    // characters and other bytes into words and file names, and some of
-    // those end the program without a useful message (a keyword with a
-    // byte >= 128: "invalid fileName"). Comments may hold any text.
-    enum { code, lineComment, blockComment } state = code;
-    label line = 1;
-    const std::size_t n = text.size();
-    for (std::size_t k = 0; k < n; ++k)
-    {
-        const unsigned char u = static_cast<unsigned char>(text[k]);
-        const unsigned char next = k + 1 < n ? text[k + 1] : 0;
-        if (u == '\n')
-        {
-            ++line;
-            if (state == lineComment)
-            {
-                state = code;
-            }
-            continue;
-        }
-        if (state == lineComment)
-        {
-            continue;
-        }
-        if (state == blockComment)
-        {
-            if (u == '*' && next == '/')
-            {
-                state = code;
-                ++k;
-            }
-            continue;
-        }
-        if (u == '/' && next == '/')
-        {
-            state = lineComment;
-            ++k;
-            continue;
-        }
-        if (u == '/' && next == '*')
-        {
-            state = blockComment;
-            ++k;
-            continue;
-        }
-        if
-        (
-            (u < 0x20 && u != '\t' && u != '\r' && u != '\f')
-         || u >= 0x7f
-        )
-        {
-            FatalErrorInFunction
-                << name << " line " << line << ": character code "
-                << label(u) << " is not ASCII text; a particle file is"
-                << " ASCII text (any text in comments)" << exit(FatalError);
-        }
-    }
-    // OpenFOAM names each entry <file>.<keyword>, a fileName; with its
-    // etc/controlDict's debug switch fileName 2, a quoted keyword with a
-    // space ends the program ("invalid fileName"). A particle file's
-    // keywords are no file names: the switch is off while it is parsed.
-    struct fileNameCheckOff
-    {
-        const int saved = fileName::debug;
-        fileNameCheckOff() { fileName::debug = 0; }
-        ~fileNameCheckOff() { fileName::debug = saved; }
-    } checkOff;
-
-    IStringStream is(text);
-    is.name() = name;
-    is.lineNumber() = 1;    // as a file's (a string stream counts from 0)
-    dictionary dict(is);
-
-    // A quoted keyword is a regular expression to OpenFOAM, matched
-    // against every keyword looked up: a pathological one takes minutes
-    // (found by tests/fuzz). A particle file has none. The keys are asked
-    // of the dictionary (keys(true), in libOpenFOAM), not by walking its
-    // list here: after a repeated keyword has replaced an entry, walking
-    // the list from this side read a freed entry (valgrind, tests/fuzz)
-    const List<keyType> patterns(dict.keys(true));
-    if (patterns.size())
-    {
-        FatalIOErrorInFunction(dict)
-            << name << ": keyword \"" << patterns[0].c_str() << "\" is a"
-            << " pattern (a quoted keyword); a particle file has plain"
-            << " keywords only (particles, contacts)" << exit(FatalIOError);
-    }
-    return dict;
-}
-
-
-Foam::dictionary Foam::granularSystem::readParticleFile(const fileName& file)
-{
-    std::ifstream ifs(file, std::ios::binary);
-    if (!ifs.good())
-    {
-        FatalErrorInFunction
-            << "cannot open the particle file " << file
-            << exit(FatalError);
-    }
-    std::ostringstream text;
-    text << ifs.rdbuf();
-    return parseParticleText(text.str(), file);
-}
-
-
 void Foam::granularSystem::readParticles(const fileName& file)
 {
-    readParticles(readParticleFile(file), file);
+    readParticles(particleFileReader::read(file), file);
 }
 
 
