@@ -210,6 +210,26 @@ TEST(badInput, particleFileContactOfAMissingParticleIsRefused)
         ),
         {"contact (0 7)", "not in the file"}
     );
+    // A counted list would be allocated before it is read: refused
+    expectHas
+    (
+        readError
+        (
+            "particles (\n(0 ball glass free (0 0 0.01) (1 0 0 0))\n);\n"
+            "contacts 999999999 ( ((0 7) (0 0 0)) );"
+        ),
+        {"reading contacts", "999999999"}
+    );
+    // A malformed contact
+    expectHas
+    (
+        readError
+        (
+            "particles (\n(0 ball glass free (0 0 0.01) (1 0 0 0))\n);\n"
+            "contacts ( (0 1 (0 0 0)) );"
+        ),
+        {"contact pair", "line 4"}
+    );
 }
 
 

@@ -16,13 +16,14 @@ Description
     particles
     (
     //  id shape material motion position      orientation (w x y z)
-    //     [velocity] [angular velocity, body] [force] [torque]
+    //     [velocity] [angular velocity, world] [force] [torque]
         (0 cube glass free (0.01 0.02 0.03) (1 0 0 0))
         (1 ball glass free (0.05 0.02 0.03) (1 0 0 0) (0 0 -0.1) (0 0 0))
     );
-    contacts    // laws with history: (i j) per contact, j < 0 for wall -1-j
+    contacts    // laws with history: ((i j) history) per contact, by the
+                // particles' places in the file; j < 0 for wall -1-j
     (
-        (0 1 (1e-6 0 0))
+        ((0 1) (1e-6 0 0))
     );
     \endverbatim
 
@@ -38,7 +39,6 @@ Description
 #include "OFstream.H"
 #include "IOobject.H"
 #include "OSspecific.H"
-#include "Tuple2.H"
 #include "Map.H"
 #include "OStringStream.H"
 #include "uniformDimensionedFields.H"
@@ -192,19 +192,36 @@ void Foam::granularSystem::readParticles
         // binary stream (a FixedList would be read raw)
         ITstream& cs = dict.lookup("contacts");
         cs.format(IOstream::ASCII);
-        List<Tuple2<labelPair, vector>> contacts(cs);
-        for (const auto& c : contacts)
+        // Read contact by contact, not as a List: a counted list
+        // ("N(...)") would allocate N entries before reading them, and
+        // OpenFOAM's List leaks them when an entry is malformed
+        cs.readBegin("contacts");
+        token t(cs);
+        while (!(t.isPunctuation() && t.pToken() == token::END_LIST))
         {
-            const label i = c.first().first(), j = c.first().second();
+            if (!(t.isPunctuation() && t.pToken() == token::BEGIN_LIST))
+            {
+                FatalIOErrorInFunction(cs)
+                    << "in " << file << " line " << t.lineNumber()
+                    << ": expected a contact ((i j) (x y z)), found "
+                    << t.info() << exit(FatalIOError);
+            }
+            cs.readBegin("contact pair");
+            const label i = readLabel(cs);
+            const label j = readLabel(cs);
+            cs.readEnd("contact pair");
+            const vector history = readVector(cs);
+            cs.readEnd("contact");
             if (i < 0 || i >= size() || j >= size())
             {
-                FatalIOErrorInFunction(dict)
-                    << "in " << file << ": contact (" << i << ' ' << j
-                    << ") names a particle that is not in the file"
+                FatalIOErrorInFunction(cs)
+                    << "in " << file << " line " << cs.lineNumber()
+                    << ": contact (" << i << ' ' << j << ") names a"
+                    << " particle that is not in the file"
                     << exit(FatalIOError);
             }
-            history_[j >= 0 ? pairKey(i, j) : wallKey(i, -1 - j)] =
-                c.second();
+            history_[j >= 0 ? pairKey(i, j) : wallKey(i, -1 - j)] = history;
+            t = token(cs);
         }
     }
     checkStart(file);
