@@ -154,7 +154,7 @@ TEST(sceneEffects, automaticCollisionsSkipTheSubStepsWhileNoPairIsNear)
     // one step per evolve with no contact work; the trajectory is that of
     // collisions on (constant force: velocity Verlet is exact) to
     // round-off
-    point x[2];
+    point x[2] = {Zero, Zero};
     for (const std::string mode : {"on", "automatic"})
     {
         auto sys = makeScene("collisions " + mode + ";");
@@ -198,7 +198,7 @@ TEST(sceneEffects, automaticCollisionsMatchCollisionsOnThroughACollision)
     // A head-on collision at 0.5 m/s from 3 D apart, no gravity: automatic
     // skips the approach and sub-cycles the contact; the rebound speeds
     // agree with collisions on to 1e-9 relative
-    vector U[2];
+    vector U[2] = {Zero, Zero};
     for (const std::string mode : {"on", "automatic"})
     {
         auto sys = makeScene("collisions " + mode + ";");
