@@ -87,9 +87,9 @@ void Foam::granularSystem::readParticles
 
     is.readBegin("particles");
     token t(is);
-    while (!(t.isPunctuation() && t.pToken() == token::END_LIST))
+    while (t != token::END_LIST)
     {
-        if (!(t.isPunctuation() && t.pToken() == token::BEGIN_LIST))
+        if (t != token::BEGIN_LIST)
         {
             FatalIOErrorInFunction(is)
                 << "in " << file << " line " << t.lineNumber()
@@ -142,7 +142,7 @@ void Foam::granularSystem::readParticles
         FixedList<vector, 4> extra(Zero);
         label nExtra = 0;
         token next(is);
-        while (next.isPunctuation() && next.pToken() == token::BEGIN_LIST)
+        while (next == token::BEGIN_LIST)
         {
             if (nExtra == 4)
             {
@@ -156,7 +156,7 @@ void Foam::granularSystem::readParticles
             is >> extra[nExtra++];
             next = token(is);
         }
-        if (!(next.isPunctuation() && next.pToken() == token::END_LIST))
+        if (next != token::END_LIST)
         {
             FatalIOErrorInFunction(is)
                 << "in " << file << " line " << next.lineNumber()
@@ -189,7 +189,7 @@ void Foam::granularSystem::readParticles
     if (dict.found("contacts"))
     {
         // Text, also when the dictionary came from the master through a
-        // binary stream (a FixedList would be read raw)
+        // binary stream (a vector would be read raw)
         ITstream& cs = dict.lookup("contacts");
         cs.format(IOstream::ASCII);
         // Read contact by contact, not as a List: a counted list
@@ -197,9 +197,9 @@ void Foam::granularSystem::readParticles
         // OpenFOAM's List leaks them when an entry is malformed
         cs.readBegin("contacts");
         token t(cs);
-        while (!(t.isPunctuation() && t.pToken() == token::END_LIST))
+        while (t != token::END_LIST)
         {
-            if (!(t.isPunctuation() && t.pToken() == token::BEGIN_LIST))
+            if (t != token::BEGIN_LIST)
             {
                 FatalIOErrorInFunction(cs)
                     << "in " << file << " line " << t.lineNumber()

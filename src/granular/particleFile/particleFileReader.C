@@ -37,37 +37,16 @@ namespace
 {
     using namespace Foam;
 
+    //- The character of a punctuation token, '\0' for any other token
+    char punctuation(const token& t)
+    {
+        return t.isPunctuation() ? char(t.pToken()) : '\0';
+    }
+
     //- The bracket that closes an opening one
     char closing(const char open)
     {
         return open == '(' ? ')' : open == '[' ? ']' : '}';
-    }
-
-    bool isOpening(const token& t)
-    {
-        return
-            t.isPunctuation()
-         && (
-                t.pToken() == token::BEGIN_LIST
-             || t.pToken() == token::BEGIN_SQR
-             || t.pToken() == token::BEGIN_BLOCK
-            );
-    }
-
-    bool isClosing(const token& t)
-    {
-        return
-            t.isPunctuation()
-         && (
-                t.pToken() == token::END_LIST
-             || t.pToken() == token::END_SQR
-             || t.pToken() == token::END_BLOCK
-            );
-    }
-
-    bool is(const token& t, const token::punctuationToken p)
-    {
-        return t.isPunctuation() && t.pToken() == p;
     }
 
     //- The keywords a particle file may hold, for the messages
@@ -295,30 +274,31 @@ Foam::List<Foam::token> Foam::particleFileReader::readValue
         }
         const token& t = tokens_[next_];
         const label line = t.lineNumber();
-        if (is(t, token::END_STATEMENT) && open.empty())
+        const char p = punctuation(t);
+        if (p == ';' && open.empty())
         {
             ++next_;
             break;
         }
-        if (isOpening(t))
+        if (p == '(' || p == '[' || p == '{')
         {
-            open.append(std::make_pair(char(t.pToken()), line));
+            open.append(std::make_pair(p, line));
         }
-        else if (isClosing(t))
+        else if (p == ')' || p == ']' || p == '}')
         {
             if (open.empty())
             {
                 FatalErrorInFunction
                     << name_ << " line " << line << ": keyword " << keyword
-                    << " (line " << keyLine << "): '" << char(t.pToken())
+                    << " (line " << keyLine << "): '" << p
                     << "' closes nothing (a ';' missing before it?)"
                     << exit(FatalError);
             }
-            if (closing(open.last().first) != char(t.pToken()))
+            if (closing(open.last().first) != p)
             {
                 FatalErrorInFunction
                     << name_ << " line " << line << ": keyword " << keyword
-                    << ": '" << char(t.pToken()) << "' does not close '"
+                    << ": '" << p << "' does not close '"
                     << open.last().first << "' of line "
                     << open.last().second << exit(FatalError);
             }
@@ -360,14 +340,14 @@ void Foam::particleFileReader::readBlock
                 << name_ << ": " << keyword << " (line " << keyLine
                 << "): the file ends before its '}'" << exit(FatalError);
         }
-        if (is(tokens_[next_], token::END_BLOCK))
+        if (tokens_[next_] == token::END_BLOCK)
         {
             ++next_;
             return;
         }
         const label line = lineOf(next_);
         const word key(readKeyword(seen));
-        if (next_ < tokens_.size() && is(tokens_[next_], token::BEGIN_BLOCK))
+        if (next_ < tokens_.size() && tokens_[next_] == token::BEGIN_BLOCK)
         {
             FatalErrorInFunction
                 << name_ << " line " << line << ": " << keyword << " entry "
@@ -410,7 +390,7 @@ Foam::dictionary Foam::particleFileReader::entries()
         const word key(readKeyword(seen));
         if (key == "FoamFile")
         {
-            if (next_ >= tokens_.size() || !is(tokens_[next_], token::BEGIN_BLOCK))
+            if (next_ >= tokens_.size() || tokens_[next_] != token::BEGIN_BLOCK)
             {
                 FatalErrorInFunction
                     << name_ << " line " << line << ": expected '{' after"
