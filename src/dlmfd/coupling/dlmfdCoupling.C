@@ -431,7 +431,7 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
 
     // (4) On the master: forces, torques and the granular corrector,
     // contacts from X^n over dt
-    label nPoints = 0, nDropped = 0, maxIter = 0, nSub = 0;
+    label nPoints = 0, nSurface = 0, nDropped = 0, maxIter = 0, nSub = 0;
     scalar maxError = 0;
     if (Pstream::master())
     {
@@ -440,6 +440,7 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
             const fictitiousDomain::body& b = bodies[i];
             const fictitiousDomain::result& r = res[i];
             nPoints += r.nInterior + r.nSurface;
+            nSurface += r.nSurface;
             nDropped += r.nSurfaceDropped;
             maxIter = max(maxIter, r.iterations);
             maxError = max(maxError, r.constraintError);
@@ -486,16 +487,30 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
         {
             const vector arm = r.interiorCentres[j] - bodies[i].centre - moved;
             u[r.interiorCells[j]] = p.velocity() + (p.omega() ^ arm);
+            if (r.interiorDeviation.size())
+            {
+                u[r.interiorCells[j]] += r.interiorDeviation[j];
+            }
         }
     }
     U.correctBoundaryConditions();
     fdSeconds_ += clock.timeIncrement();
 
     const granularSystem::statistics& s = granular_.stats();
-    Info<< "DLM/FD: " << n << " particles, " << nPoints << " points ("
-        << nDropped << " surface points without a stencil left out),"
-        << " CG iterations <= " << maxIter << ", constraint error "
-        << maxError << " m/s; granular " << nSub << " sub-steps, "
+    Info<< "DLM/FD: " << n << " particles, " << nPoints << " points";
+    if (fd_.treatment() == fictitiousDomain::surfaceTreatment::ghostCells)
+    {
+        Info<< " (" << nSurface << " ghost cells, " << nDropped
+            << " of them with no fluid cell in reach), momentum balance "
+            << maxError << " m/s";
+    }
+    else
+    {
+        Info<< " (" << nDropped << " surface points without a stencil left"
+            << " out), CG iterations <= " << maxIter << ", constraint error "
+            << maxError << " m/s";
+    }
+    Info<< "; granular " << nSub << " sub-steps, "
         << s.nContacts << " + " << s.nWallContacts << " wall contacts,"
         << " max overlap " << s.maxOverlapRatio << " D" << endl;
 

@@ -14,44 +14,10 @@ License
 #include "fictitiousDomain.H"
 #include "particleGeometry.H"
 #include "Switch.H"
+#include "smallDenseSolve.H"
+#include "fictitiousDomainParts.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
-
-//- The collocation points of one body and the interpolation B from its
-//- cells to them (rows in CSR over the body's gathered cells)
-struct Foam::fictitiousDomain::collocationSet
-{
-    //- The cells: centres where they sit relative to the body, 1/V_c and
-    //- velocities
-    List<point> centres;
-    scalarList invVolume;
-    vectorField u;
-
-    List<point> points;
-    label nInterior = 0;
-    labelList rowStart;
-    labelList rowCell;
-    scalarList rowWeight;
-};
-
-
-//- One rank's cells of one body: the first nInterior are inside it (each
-//- an interior point), the others in the stencils of its surface points
-struct Foam::fictitiousDomain::contribution
-{
-    label body = -1;
-    List<point> centres;
-    scalarList volumes;
-    vectorField u;
-    label nInterior = 0;
-
-    //- The surface points (their index in the body's list) that have
-    //- cells here, and those cells in CSR
-    labelList surfacePoint;
-    labelList stencilStart;
-    labelList stencilCell;
-};
-
 
 namespace Foam
 {
@@ -80,58 +46,6 @@ namespace
 {
 
 using namespace Foam;
-
-//- Solve the small dense system a x = b (n <= 6) by Gauss elimination
-//- with partial pivoting; false if it is singular to round-off
-bool denseSolve(List<scalarList>& a, scalarList& b)
-{
-    const label n = b.size();
-    scalar scale = 0;
-    for (label i = 0; i < n; ++i)
-    {
-        for (label j = 0; j < n; ++j)
-        {
-            scale = max(scale, mag(a[i][j]));
-        }
-    }
-    for (label k = 0; k < n; ++k)
-    {
-        label p = k;
-        for (label i = k + 1; i < n; ++i)
-        {
-            if (mag(a[i][k]) > mag(a[p][k]))
-            {
-                p = i;
-            }
-        }
-        if (mag(a[p][k]) <= 1e-13*scale)
-        {
-            return false;
-        }
-        std::swap(a[p], a[k]);
-        std::swap(b[p], b[k]);
-        for (label i = k + 1; i < n; ++i)
-        {
-            const scalar f = a[i][k]/a[k][k];
-            for (label j = k; j < n; ++j)
-            {
-                a[i][j] -= f*a[k][j];
-            }
-            b[i] -= f*b[k];
-        }
-    }
-    for (label k = n - 1; k >= 0; --k)
-    {
-        scalar s = b[k];
-        for (label j = k + 1; j < n; ++j)
-        {
-            s -= a[k][j]*b[j];
-        }
-        b[k] = s/a[k][k];
-    }
-    return true;
-}
-
 
 //- y = A x = dt B M^-1 B^T x
 void applyA
@@ -283,7 +197,27 @@ label conjugateGradient
 } // End anonymous namespace
 
 
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::fictitiousDomain::surfaceTreatment>
+Foam::fictitiousDomain::surfaceTreatmentNames
+({
+    {surfaceTreatment::fluidStencil, "fluidStencil"},
+    {surfaceTreatment::ghostCells, "ghostCells"},
+});
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::fictitiousDomain::reach() const
+{
+    // Ghost cells: the fits' largest radius about a surface point;
+    // surface stencils: their radius, and two cells for the inside search
+    return treatment_ == surfaceTreatment::ghostCells
+        ? ghostFitRadius_ + 1
+        : max(scalar(2), stencilRadius_);
+}
+
 
 Foam::scalar Foam::fictitiousDomain::cellSize(const scalar V) const
 {
@@ -334,7 +268,7 @@ bool Foam::fictitiousDomain::fitWeights
     }
     scalarList e0(nCoeff, scalar(0));
     e0[0] = 1;
-    if (!denseSolve(XtX, e0))
+    if (!smallDenseSolve(XtX, e0))
     {
         return false;
     }
@@ -361,6 +295,14 @@ Foam::fictitiousDomain::fictitiousDomain
 )
 :
     mesh_(mesh),
+    treatment_
+    (
+        surfaceTreatmentNames.getOrDefault
+        (
+            "surfaceTreatment", dict, surfaceTreatment::fluidStencil
+        )
+    ),
+    ghostFitRadius_(dict.getOrDefault<scalar>("ghostFitRadius", 1.5)),
     surfacePoints_(dict.getOrDefault<Switch>("surfacePoints", true)),
     surfaceSpacing_(dict.getOrDefault<scalar>("surfacePointSpacing", 1)),
     stencilRadius_(dict.getOrDefault<scalar>("surfaceStencilRadius", 1.2)),
@@ -395,6 +337,13 @@ Foam::fictitiousDomain::fictitiousDomain
         FatalIOErrorInFunction(dict)
             << "surfacePointSpacing = " << surfaceSpacing_ << " is not"
             << " allowed; it must be > 0 (in cell sizes)"
+            << exit(FatalIOError);
+    }
+    if (!(ghostFitRadius_ >= 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "ghostFitRadius = " << ghostFitRadius_ << " is not"
+            << " allowed; it must be >= 1 (in cell sizes)"
             << exit(FatalIOError);
     }
     if (!(stencilRadius_ >= 1))
@@ -529,7 +478,7 @@ Foam::scalarList Foam::fictitiousDomain::cellSizes
 
         // A body must not meet itself across a period
         const scalar reach =
-            bodies[b].shape->boundingRadius() + max(scalar(2), stencilRadius_)*h[b];
+            bodies[b].shape->boundingRadius() + this->reach()*h[b];
         for (direction d = 0; d < vector::nComponents; ++d)
         {
             if (period_[d] > 0 && !(2*reach < period_[d]))
@@ -590,6 +539,12 @@ void Foam::fictitiousDomain::findCandidates
     candidates& cand
 )
 {
+    if (treatment_ == surfaceTreatment::ghostCells)
+    {
+        findGhostCandidates(bodies, cand);
+        return;
+    }
+
     const vectorField& C = mesh_.C();
 
     // The claims of the last step are undone
@@ -619,8 +574,7 @@ void Foam::fictitiousDomain::findCandidates
         const scalar h = cand.h[b];
         cand.shifts[b] = cellCentreSearch::periodicShifts
         (
-            mesh_.bounds(), period_, B.centre,
-            rb + max(scalar(2), stencilRadius_)*h
+            mesh_.bounds(), period_, B.centre, rb + reach()*h
         );
         const List<vector>& shifts = cand.shifts[b];
 
@@ -717,24 +671,41 @@ void Foam::fictitiousDomain::collect
     con.nInterior = cellList.size();
 
     DynamicList<label> surfacePoint, stencilStart, stencilCell;
-    forAll(cand.stencils[b], k)
+    label nSent = -1;
+    if (treatment_ == surfaceTreatment::ghostCells)
     {
-        const labelList& st = cand.stencils[b][k];
-        const label start = stencilCell.size();
-        forAll(st, i)
+        // The fluid cells near the body: in no body, not written back
+        nSent = cellList.size();
+        const labelList& near = cand.stencils[b][0];
+        forAll(near, i)
         {
-            if (cellOwner_[st[i]] == b)
+            if (cellOwner_[near[i]] < 0)
             {
-                stencilCell.append
-                (
-                    localOf(st[i], cand.stencilShifts[b][k][i])
-                );
+                localOf(near[i], cand.stencilShifts[b][0][i]);
             }
         }
-        if (stencilCell.size() > start)
+    }
+    else
+    {
+        forAll(cand.stencils[b], k)
         {
-            surfacePoint.append(k);
-            stencilStart.append(start);
+            const labelList& st = cand.stencils[b][k];
+            const label start = stencilCell.size();
+            forAll(st, i)
+            {
+                if (cellOwner_[st[i]] == b)
+                {
+                    stencilCell.append
+                    (
+                        localOf(st[i], cand.stencilShifts[b][k][i])
+                    );
+                }
+            }
+            if (stencilCell.size() > start)
+            {
+                surfacePoint.append(k);
+                stencilStart.append(start);
+            }
         }
     }
     stencilStart.append(stencilCell.size());
@@ -756,6 +727,11 @@ void Foam::fictitiousDomain::collect
     con.stencilStart.transfer(stencilStart);
     con.stencilCell.transfer(stencilCell);
     cells.transfer(cellList);
+    if (nSent >= 0)
+    {
+        // Only the inside cells get a force back
+        cells.setSize(nSent);
+    }
 }
 
 
@@ -988,7 +964,7 @@ void Foam::fictitiousDomain::solveBody
                 rhs[i] += Umodes[i][k] & lambda[k];
             }
         }
-        if (!denseSolve(K, rhs))
+        if (!smallDenseSolve(K, rhs))
         {
             FatalErrorInFunction
                 << "particle " << b << ": the rigid-mode system of the"
@@ -1126,8 +1102,10 @@ Foam::fictitiousDomain::solve
 
     // This rank's cells of each body, to the rank that solves it
     List<List<labelList>> sentCells(nProcs);
+    List<labelList> sentBodies(nProcs);
     {
         List<DynamicList<labelList>> cellsTo(nProcs);
+        List<DynamicList<label>> bodiesTo(nProcs);
         PstreamBuffers toSolvers(Pstream::commsTypes::nonBlocking);
         List<DynamicList<contribution>> outgoing(nProcs);
         labelList localIndex(mesh_.nCells(), -1);
@@ -1144,12 +1122,14 @@ Foam::fictitiousDomain::solve
             res.interiorCells = SubList<label>(cells, con.nInterior);
             res.interiorCentres = SubList<point>(con.centres, con.nInterior);
             const label q = solverOf(b);
+            bodiesTo[q].append(b);
             cellsTo[q].append(std::move(cells));
             outgoing[q].append(std::move(con));
         }
         for (label q = 0; q < nProcs; ++q)
         {
             sentCells[q].transfer(cellsTo[q]);
+            sentBodies[q].transfer(bodiesTo[q]);
             // One by one: a List of them would be checked for equal
             // elements, which contributions do not compare
             UOPstream os(q, toSolvers);
@@ -1188,11 +1168,14 @@ Foam::fictitiousDomain::solve
             }
         }
 
-        // Solve, and send each rank the force density of its cells
-        List<List<vectorField>> forces(nProcs);
+        // Solve, and send each rank the force density of its cells (and,
+        // with ghost cells, their deviation from the rigid motion)
+        const bool ghost = treatment_ == surfaceTreatment::ghostCells;
+        List<List<vectorField>> forces(nProcs), deviations(nProcs);
         forAll(incoming, r)
         {
             forces[r].setSize(incoming[r].size());
+            deviations[r].setSize(ghost ? incoming[r].size() : 0);
         }
         forAll(bodies, b)
         {
@@ -1200,19 +1183,37 @@ Foam::fictitiousDomain::solve
             {
                 continue;
             }
-            collocationSet s;
             result& res = results_[b];
-            assemble(bodies[b], cand.h[b], partsOf[b], s, res);
-            vectorField f(s.u.size(), Zero);
-            if (s.points.size())
+            vectorField f, dev;
+            if (ghost)
             {
-                solveBody(b, bodies[b], s, dt, f, res);
+                solveGhostBody
+                (
+                    bodies[b], cand.h[b], partsOf[b], dt, f, dev, res
+                );
+            }
+            else
+            {
+                collocationSet s;
+                assemble(bodies[b], cand.h[b], partsOf[b], s, res);
+                f.setSize(s.u.size(), Zero);
+                if (s.points.size())
+                {
+                    solveBody(b, bodies[b], s, dt, f, res);
+                }
             }
             label start = 0;
             for (const labelPair& rj : whereFrom[b])
             {
-                const label size = incoming[rj.first()][rj.second()].u.size();
-                forces[rj.first()][rj.second()] = SubField<vector>(f, size, start);
+                const contribution& con = incoming[rj.first()][rj.second()];
+                const label size = ghost ? con.nInterior : con.u.size();
+                forces[rj.first()][rj.second()] =
+                    SubField<vector>(f, size, start);
+                if (ghost)
+                {
+                    deviations[rj.first()][rj.second()] =
+                        SubField<vector>(dev, size, start);
+                }
                 start += size;
             }
         }
@@ -1222,16 +1223,16 @@ Foam::fictitiousDomain::solve
         for (label r = 0; r < nProcs; ++r)
         {
             UOPstream os(r, toOwners);
-            os << forces[r];
+            os << forces[r] << deviations[r];
         }
         toOwners.finishedSends();
         commSeconds_ += clock.timeIncrement();
         vectorField& src = source_.primitiveFieldRef();
         for (label q = 0; q < nProcs; ++q)
         {
-            List<vectorField> back;
+            List<vectorField> back, backDev;
             UIPstream is(q, toOwners);
-            is >> back;
+            is >> back >> backDev;
             forAll(back, j)
             {
                 const labelList& cells = sentCells[q][j];
@@ -1240,6 +1241,12 @@ Foam::fictitiousDomain::solve
                     src[cells[i]] = back[j][i];
                     u[cells[i]] += dt*back[j][i];
                 }
+            }
+            forAll(backDev, j)
+            {
+                // The owner's bodies in the order it sent them
+                const label b = sentBodies[q][j];
+                results_[b].interiorDeviation = backDev[j];
             }
         }
     }

@@ -157,6 +157,88 @@ bool Foam::particleGeometry::contains
 }
 
 
+Foam::scalar Foam::particleGeometry::depth
+(
+    const particleShape& shape,
+    const point& x,
+    const tensor& R,
+    const point& p,
+    point& foot,
+    vector& normal
+)
+{
+    vector d = p - x;
+    if (shape.planar())
+    {
+        d.z() = 0;
+    }
+
+    const auto* s = isA<particleShapes::sphere>(shape);
+    const auto* c = isA<particleShapes::circle>(shape);
+    if (s || c)
+    {
+        const scalar r = s ? s->radius() : c->radius();
+        const scalar m = mag(d);
+        // At the centre every direction is nearest: take any
+        normal = m > VSMALL*r ? d/m : vector(1, 0, 0);
+        foot = p + (r - m)*normal;
+        return r - m;
+    }
+    if (const auto* poly = isA<particleShapes::convexPolyhedron>(shape))
+    {
+        // Inside a convex polyhedron the nearest surface point lies on the
+        // nearest face plane
+        const vector b = d & R;
+        const vectorField& normals = poly->faceNormals();
+        const scalarField& offsets = poly->faceOffsets();
+        scalar best = GREAT;
+        label nearest = -1;
+        forAll(normals, f)
+        {
+            if (shape.planar() && !isSideFace(normals[f]))
+            {
+                continue;
+            }
+            const scalar gap = offsets[f] - (normals[f] & b);
+            if (gap < best)
+            {
+                best = gap;
+                nearest = f;
+            }
+        }
+        normal = R & normals[nearest];
+        if (shape.planar())
+        {
+            normal.z() = 0;
+            normal.normalise();
+        }
+        foot = p + best*normal;
+        return best;
+    }
+
+    FatalErrorInFunction
+        << "shape " << shape.name() << " of type " << shape.type()
+        << " has no depth function for the fictitious domain; known types:"
+        << " sphere, circle and the convex polyhedra and polygons"
+        << exit(FatalError);
+    return 0;
+}
+
+
+Foam::scalar Foam::particleGeometry::outsideDistanceBound
+(
+    const particleShape& shape,
+    const point& x,
+    const tensor& R,
+    const point& p
+)
+{
+    point foot;
+    vector normal;
+    return -depth(shape, x, R, p, foot, normal);
+}
+
+
 void Foam::particleGeometry::surfacePoints
 (
     const particleShape& shape,

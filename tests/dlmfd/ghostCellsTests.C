@@ -1,0 +1,230 @@
+/*---------------------------------------------------------------------------*\
+  dlmfdFoam: DLM/FD particle-resolved simulation of particulate flows
+-------------------------------------------------------------------------------
+License
+    This file is part of dlmfdFoam, an extension of OpenFOAM.
+
+    dlmfdFoam is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by the
+    Free Software Foundation, either version 3 of the License, or (at your
+    option) any later version. See <http://www.gnu.org/licenses/>.
+
+Description
+    The ghost-cell surface treatment of the fictitious-domain step
+    (surfaceTreatment ghostCells): a shear flow along a face is carried
+    through the wall where the face is; every cell within a cell of the
+    surface has fluid to fit, whatever the resolution (no point is left
+    out); the fluid cells, those in a two-cell gap between two cubes
+    included, are never forced.
+
+\*---------------------------------------------------------------------------*/
+
+#include "foamTestCase.H"
+#include "fictitiousDomain.H"
+#include "particleGeometry.H"
+#include "platonicSolid.H"
+#include "sphere.H"
+#include "mathematicalConstants.H"
+
+#include <gtest/gtest.h>
+
+using namespace Foam;
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- A point as text, for the failure messages
+std::string str(const vector& v)
+{
+    return "(" + std::to_string(v.x()) + " " + std::to_string(v.y()) + " "
+        + std::to_string(v.z()) + ")";
+}
+
+
+dictionary ghostCells()
+{
+    dictionary dict;
+    dict.add("surfaceTreatment", word("ghostCells"));
+    return dict;
+}
+
+
+tmp<volVectorField> zeroU(const fvMesh& mesh)
+{
+    return tmp<volVectorField>
+    (
+        new volVectorField
+        (
+            IOobject("U", mesh.time().timeName(), mesh),
+            mesh,
+            dimensionedVector(dimVelocity, Zero),
+            "calculated"
+        )
+    );
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+TEST(ghostCells, linearShearAlongAFaceIsExtrapolatedThroughTheWall)
+{
+    // A fixed cube of edge 0.4 whose +x face sits at x = 0.717, a third of a
+    // cell from the cell faces (h = 1/24); fluid in a shear U_y = a (x - xf)
+    // on that side. The ghost cells under the middle of that face take the
+    // same linear profile on the other side of the wall: U_y = a (x - xf) < 0
+    test::foamTestCase tc;
+    const fvMesh& mesh = tc.makeBoxMesh(24, 24, 24, vector::one);
+    tmp<volVectorField> tU = zeroU(mesh);
+    volVectorField& U = tU.ref();
+    const scalar a = 0.7, edge = 0.4;
+    const point X(0.517, 0.5, 0.5);
+    const scalar xf = X.x() + edge/2;
+    forAll(U, c)
+    {
+        U[c] = vector(0, a*(mesh.C()[c].x() - xf), 0);
+    }
+    particleShapes::platonicSolid cube("cube", "cube", edge);
+    List<fictitiousDomain::body> bodies(1);
+    bodies[0].shape = &cube;
+    bodies[0].centre = X;
+    bodies[0].free = false;
+    bodies[0].excessDensity = 1;
+
+    dictionary dict(ghostCells());
+    fictitiousDomain fd(mesh, dict);
+    const fictitiousDomain::result r = fd.solve(U, bodies, 0.01)[0];
+
+    const scalar h = 1.0/24;
+    label checked = 0;
+    forAll(r.interiorCells, i)
+    {
+        const point& x = mesh.C()[r.interiorCells[i]];
+        const bool underFace =
+            x.x() > xf - h && mag(x.y() - X.y()) < edge/2 - 3*h
+         && mag(x.z() - X.z()) < edge/2 - 3*h;
+        if (!underFace)
+        {
+            continue;
+        }
+        ++checked;
+        EXPECT_NEAR(U[r.interiorCells[i]].y(), a*(x.x() - xf), 1e-12) << str(x);
+        EXPECT_LT(U[r.interiorCells[i]].y(), 0) << str(x);
+    }
+    EXPECT_GE(checked, 9);
+    EXPECT_EQ(r.nSurfaceDropped, 0);
+}
+
+
+TEST(ghostCells, everySurfaceCellHasFluidToFitAtAnyResolution)
+{
+    // A sphere and a cube of the same volume, D = 0.5, at D/dx = 4, 6, 8
+    // and 12, both rotated and off the grid: no ghost cell is without
+    // fluid cells to fit, none is left out
+    for (const label N : {8, 12, 16, 24})
+    {
+        test::foamTestCase tc;
+        const fvMesh& mesh = tc.makeBoxMesh(N, N, N, vector::one);
+        tmp<volVectorField> tU = zeroU(mesh);
+        forAll(tU(), c)
+        {
+            tU.ref()[c] = vector(0.1, 0, 0);
+        }
+        const scalar D = 0.5;
+        particleShapes::sphere ball("ball", D);
+        particleShapes::platonicSolid cube
+        (
+            "cube", "cube", std::cbrt(constant::mathematical::pi/6)*D
+        );
+        for (const particleShape* shape : {static_cast<const particleShape*>(&ball), static_cast<const particleShape*>(&cube)})
+        {
+            List<fictitiousDomain::body> bodies(1);
+            bodies[0].shape = shape;
+            bodies[0].centre = point(0.503, 0.488, 0.511);
+            bodies[0].R = quaternion(normalised(vector(1, 2, 3)), 0.7).R();
+            bodies[0].excessDensity = 1;
+            dictionary dict(ghostCells());
+            fictitiousDomain fd(mesh, dict);
+            const fictitiousDomain::result r = fd.solve(tU.ref(), bodies, 0.01)[0];
+            Info<< shape->type() << " at D/dx " << D*N << ": "
+                << r.nInterior << " interior, " << r.nSurface
+                << " ghost cells, " << r.nSurfaceDropped << " without fluid"
+                << endl;
+            EXPECT_GT(r.nSurface, 0) << N;
+            EXPECT_EQ(r.nSurfaceDropped, 0) << N << " " << shape->type();
+        }
+    }
+}
+
+
+TEST(ghostCells, fluidCellsAreNeverForcedNotEvenInATwoCellGap)
+{
+    // Two cubes face to face, two cells apart, in a swirling flow: the force
+    // density is zero in every cell outside both, and the fluid there keeps
+    // its velocity; each cube's cells take the whole force
+    test::foamTestCase tc;
+    const fvMesh& mesh = tc.makeBoxMesh(24, 24, 24, vector::one);
+    tmp<volVectorField> tU = zeroU(mesh);
+    volVectorField& U = tU.ref();
+    using constant::mathematical::twoPi;
+    forAll(U, c)
+    {
+        const point& x = mesh.C()[c];
+        U[c] = vector
+        (
+            0.1*std::sin(twoPi*x.y()),
+            0.05*std::cos(twoPi*x.z()) + 0.03,
+            0.08*std::sin(twoPi*x.x())
+        );
+    }
+    const vectorField before(U.primitiveField());
+    const scalar h = 1.0/24, edge = 0.3;
+    particleShapes::platonicSolid cube("cube", "cube", edge);
+    List<fictitiousDomain::body> bodies(2);
+    for (auto& b : bodies)
+    {
+        b.shape = &cube;
+        b.excessDensity = 1;
+    }
+    bodies[0].centre = point(0.5 - h - edge/2 + 0.01*h, 0.5, 0.5);
+    bodies[1].centre = point(0.5 + h + edge/2 + 0.01*h, 0.5, 0.5);
+
+    dictionary dict(ghostCells());
+    fictitiousDomain fd(mesh, dict);
+    const List<fictitiousDomain::result>& res = fd.solve(U, bodies, 0.01);
+
+    label outside = 0, inGap = 0;
+    forAll(U, c)
+    {
+        const point& x = mesh.C()[c];
+        bool inside = false;
+        for (const auto& b : bodies)
+        {
+            inside = inside
+             || particleGeometry::contains(cube, b.centre, b.R, x);
+        }
+        if (inside)
+        {
+            continue;
+        }
+        ++outside;
+        inGap +=
+            mag(x.x() - 0.5) < h && mag(x.y() - 0.5) < edge/2
+         && mag(x.z() - 0.5) < edge/2;
+        EXPECT_EQ(mag(fd.source()[c]), 0) << str(x);
+        EXPECT_EQ(mag(U[c] - before[c]), 0) << str(x);
+    }
+    EXPECT_GT(inGap, 20);
+    EXPECT_GT(outside, 10000);
+    for (const auto& r : res)
+    {
+        EXPECT_GT(mag(r.sumLambda), 0);
+        EXPECT_EQ(r.nSurfaceDropped, 0);
+    }
+}
+
+
+// ************************************************************************* //
