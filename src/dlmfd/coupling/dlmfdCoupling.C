@@ -255,6 +255,22 @@ void Foam::dlmfdCoupling::broadcastState()
 }
 
 
+Foam::tensor Foam::dlmfdCoupling::predictedRotation
+(
+    const tensor& R,
+    const vector& omega,
+    const scalar dt
+)
+{
+    const scalar angle = mag(omega)*dt;
+    if (!(angle > 0))
+    {
+        return R;
+    }
+    return quaternion(omega/mag(omega), angle).R() & R;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::dlmfdCoupling::dlmfdCoupling
@@ -419,7 +435,11 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
                 b.omega.y() = 0;
             }
         }
+        // The predictor moves the body over the step, its orientation too
+        // (a rotation by |omega*| dt about omega*), so that the constraint
+        // is imposed where the body will be
         b.centre = p.position() + dt*b.V;
+        b.R = predictedRotation(p.R(), b.omega, dt);
     }
 
     // (3) Fictitious domain, distributed; its results on the master

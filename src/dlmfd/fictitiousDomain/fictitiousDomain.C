@@ -26,6 +26,8 @@ Ostream& operator<<(Ostream& os, const fictitiousDomain::contribution& c)
 {
     os  << c.body << token::SPACE << c.centres << token::SPACE << c.volumes
         << token::SPACE << c.u << token::SPACE << c.nInterior
+        << token::SPACE << c.deviation << token::SPACE << c.released
+        << token::SPACE << c.releasedMoment
         << token::SPACE << c.surfacePoint << token::SPACE << c.stencilStart
         << token::SPACE << c.stencilCell;
     return os;
@@ -35,6 +37,7 @@ Ostream& operator<<(Ostream& os, const fictitiousDomain::contribution& c)
 Istream& operator>>(Istream& is, fictitiousDomain::contribution& c)
 {
     is  >> c.body >> c.centres >> c.volumes >> c.u >> c.nInterior
+        >> c.deviation >> c.released >> c.releasedMoment
         >> c.surfacePoint >> c.stencilStart >> c.stencilCell;
     return is;
 }
@@ -328,6 +331,36 @@ Foam::fictitiousDomain::fictitiousDomain
         ),
         mesh,
         dimensionedVector(dimAcceleration, Zero)
+    ),
+    deviation_
+    (
+        IOobject
+        (
+            "ghostDeviation",
+            mesh.time().timeName(),
+            mesh,
+            treatment_ == surfaceTreatment::ghostCells
+          ? IOobject::READ_IF_PRESENT : IOobject::NO_READ,
+            treatment_ == surfaceTreatment::ghostCells
+          ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
+        ),
+        mesh,
+        dimensionedVector(dimVelocity, Zero)
+    ),
+    ghostOwner_
+    (
+        IOobject
+        (
+            "ghostOwner",
+            mesh.time().timeName(),
+            mesh,
+            treatment_ == surfaceTreatment::ghostCells
+          ? IOobject::READ_IF_PRESENT : IOobject::NO_READ,
+            treatment_ == surfaceTreatment::ghostCells
+          ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
+        ),
+        mesh,
+        dimensionedScalar("none", dimless, -1)
     ),
     results_(),
     commSeconds_(0)
@@ -715,6 +748,17 @@ void Foam::fictitiousDomain::collect
         localIndex[c] = -1;
     }
     con.body = b;
+    if (treatment_ == surfaceTreatment::ghostCells)
+    {
+        // A cell's deviation is this body's only if it held the cell
+        con.deviation.setSize(con.nInterior);
+        for (label i = 0; i < con.nInterior; ++i)
+        {
+            const label c = cellList[i];
+            con.deviation[i] =
+                label(ghostOwner_[c]) == b ? deviation_[c] : Zero;
+        }
+    }
     con.centres.transfer(centres);
     con.volumes.setSize(cellList.size());
     con.u.setSize(cellList.size());
@@ -1090,6 +1134,7 @@ Foam::fictitiousDomain::solve
     u -= dt*source_.primitiveField();
     source_.primitiveFieldRef() = Zero;
 
+
     // Every body's candidate points on this rank, and the cells shared out
     candidates cand;
     findCandidates(bodies, cand);
@@ -1109,12 +1154,22 @@ Foam::fictitiousDomain::solve
         PstreamBuffers toSolvers(Pstream::commsTypes::nonBlocking);
         List<DynamicList<contribution>> outgoing(nProcs);
         labelList localIndex(mesh_.nCells(), -1);
+        List<vector> released, releasedMoment;
+        if (treatment_ == surfaceTreatment::ghostCells)
+        {
+            releasedDeviations(bodies, released, releasedMoment);
+        }
         forAll(bodies, b)
         {
             contribution con;
             labelList cells;
             collect(b, cand, u, localIndex, con, cells);
-            if (cells.empty())
+            if (released.size())
+            {
+                con.released = released[b];
+                con.releasedMoment = releasedMoment[b];
+            }
+            if (con.centres.empty() && con.released == vector::zero)
             {
                 continue;
             }
@@ -1126,6 +1181,10 @@ Foam::fictitiousDomain::solve
             cellsTo[q].append(std::move(cells));
             outgoing[q].append(std::move(con));
         }
+        // The deviations of the last step are in the contributions now;
+        // this step sets those of the cells inside a body
+        deviation_.primitiveFieldRef() = Zero;
+        ghostOwner_.primitiveFieldRef() = -1;
         for (label q = 0; q < nProcs; ++q)
         {
             sentCells[q].transfer(cellsTo[q]);
@@ -1247,6 +1306,12 @@ Foam::fictitiousDomain::solve
                 // The owner's bodies in the order it sent them
                 const label b = sentBodies[q][j];
                 results_[b].interiorDeviation = backDev[j];
+                const labelList& cells = sentCells[q][j];
+                forAll(cells, i)
+                {
+                    deviation_[cells[i]] = backDev[j][i];
+                    ghostOwner_[cells[i]] = b;
+                }
             }
         }
     }
@@ -1259,6 +1324,8 @@ Foam::fictitiousDomain::solve
 
     U.correctBoundaryConditions();
     source_.correctBoundaryConditions();
+    deviation_.correctBoundaryConditions();
+    ghostOwner_.correctBoundaryConditions();
     return results_;
 }
 
