@@ -26,6 +26,7 @@ Ostream& operator<<(Ostream& os, const fictitiousDomain::contribution& c)
 {
     os  << c.body << token::SPACE << c.centres << token::SPACE << c.volumes
         << token::SPACE << c.u << token::SPACE << c.nInterior
+        << token::SPACE << c.nCut
         << token::SPACE << c.deviation << token::SPACE << c.released
         << token::SPACE << c.releasedMoment
         << token::SPACE << c.surfacePoint << token::SPACE << c.stencilStart
@@ -37,6 +38,7 @@ Ostream& operator<<(Ostream& os, const fictitiousDomain::contribution& c)
 Istream& operator>>(Istream& is, fictitiousDomain::contribution& c)
 {
     is  >> c.body >> c.centres >> c.volumes >> c.u >> c.nInterior
+        >> c.nCut
         >> c.deviation >> c.released >> c.releasedMoment
         >> c.surfacePoint >> c.stencilStart >> c.stencilCell;
     return is;
@@ -217,7 +219,7 @@ Foam::scalar Foam::fictitiousDomain::reach() const
     // Ghost cells: the fits' largest radius about a surface point;
     // surface stencils: their radius, and two cells for the inside search
     return treatment_ == surfaceTreatment::ghostCells
-        ? ghostFitRadius_ + 1
+        ? ghostFitRadius_
         : max(scalar(2), stencilRadius_);
 }
 
@@ -305,7 +307,7 @@ Foam::fictitiousDomain::fictitiousDomain
             "surfaceTreatment", dict, surfaceTreatment::fluidStencil
         )
     ),
-    ghostFitRadius_(dict.getOrDefault<scalar>("ghostFitRadius", 1.5)),
+    ghostFitRadius_(dict.getOrDefault<scalar>("ghostFitRadius", 2.5)),
     surfacePoints_(dict.getOrDefault<Switch>("surfacePoints", true)),
     surfaceSpacing_(dict.getOrDefault<scalar>("surfacePointSpacing", 1)),
     stencilRadius_(dict.getOrDefault<scalar>("surfaceStencilRadius", 1.2)),
@@ -372,11 +374,11 @@ Foam::fictitiousDomain::fictitiousDomain
             << " allowed; it must be > 0 (in cell sizes)"
             << exit(FatalIOError);
     }
-    if (!(ghostFitRadius_ >= 1))
+    if (!(ghostFitRadius_ >= 1.5))
     {
         FatalIOErrorInFunction(dict)
             << "ghostFitRadius = " << ghostFitRadius_ << " is not"
-            << " allowed; it must be >= 1 (in cell sizes)"
+            << " allowed; it must be >= 1.5 (in cell sizes)"
             << exit(FatalIOError);
     }
     if (!(stencilRadius_ >= 1))
@@ -707,14 +709,26 @@ void Foam::fictitiousDomain::collect
     label nSent = -1;
     if (treatment_ == surfaceTreatment::ghostCells)
     {
-        // The fluid cells near the body: in no body, not written back
-        nSent = cellList.size();
+        // The fluid cells its surface cuts (claimed by it: the closest
+        // surface), forced and written back; then the other fluid cells
+        // near it (in no body), data only
         const labelList& near = cand.stencils[b][0];
         forAll(near, i)
         {
-            if (cellOwner_[near[i]] < 0)
+            const label c = near[i];
+            if (cellOwner_[c] == b && !ownerInside_[c])
             {
-                localOf(near[i], cand.stencilShifts[b][0][i]);
+                localOf(c, cand.stencilShifts[b][0][i]);
+            }
+        }
+        con.nCut = cellList.size() - con.nInterior;
+        nSent = cellList.size();
+        forAll(near, i)
+        {
+            const label c = near[i];
+            if (cellOwner_[c] < 0 || !ownerInside_[c])
+            {
+                localOf(c, cand.stencilShifts[b][0][i]);
             }
         }
     }
@@ -1265,7 +1279,8 @@ Foam::fictitiousDomain::solve
             for (const labelPair& rj : whereFrom[b])
             {
                 const contribution& con = incoming[rj.first()][rj.second()];
-                const label size = ghost ? con.nInterior : con.u.size();
+                const label size =
+                    ghost ? con.nInterior + con.nCut : con.u.size();
                 forces[rj.first()][rj.second()] =
                     SubField<vector>(f, size, start);
                 if (ghost)
@@ -1305,9 +1320,13 @@ Foam::fictitiousDomain::solve
             {
                 // The owner's bodies in the order it sent them
                 const label b = sentBodies[q][j];
-                results_[b].interiorDeviation = backDev[j];
+                // The body's own cells first, then the fluid cells it cut
+                // (fluid: no deviation of the body's)
+                const label nInside = results_[b].interiorCells.size();
+                results_[b].interiorDeviation =
+                    SubField<vector>(backDev[j], nInside);
                 const labelList& cells = sentCells[q][j];
-                forAll(cells, i)
+                for (label i = 0; i < nInside; ++i)
                 {
                     deviation_[cells[i]] = backDev[j][i];
                     ghostOwner_[cells[i]] = b;

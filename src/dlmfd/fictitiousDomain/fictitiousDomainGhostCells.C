@@ -17,32 +17,28 @@ Description
     centres lie inside it), as in Glowinski's method where lambda lives on
     the particle; the fluid cells are never forced, so the gaps between
     close bodies are never blocked by a constraint force. A cell deeper
-    than one cell size below the surface moves rigidly. A cell within one
-    cell size of the surface (a ghost cell, depth d below its nearest
-    surface point p, outward normal n there) takes the velocity that puts
-    the no-slip wall at p for the fluid cells around it:
+    than one and a half cells below the surface moves rigidly. A cell
+    within a cell of it (a ghost cell, depth d below its nearest surface
+    point p, outward normal n there) takes the rigid motion u_r plus a
+    deviation that makes its fluid neighbours feel the wall at p; from one
+    to one and a half cells deep the deviation fades to zero.
 
-    \f[
-        u_c = u_r(x_c) - d\, a, \qquad
-        a = \frac{\sum_f s_f (u_f - u_r(x_f))}{\sum_f s_f^2}, \quad
-        s_f = n \cdot (x_f - p) > 0
-    \f]
+    With w = u - u_r the fluid's velocity relative to the body, fitted
+    about p over the fluid cells within R = ghostFitRadius cells (s = n.(x
+    - p) > 0, weights kappa = (1 - r^2/R^2)^2): at a no-slip wall w
+    vanishes with its tangential derivatives, so its tangential part grows
+    as s a_t and, by continuity, its normal part as b s^2. The deviation
+    is -d a_t tangentially (the profile carried through the wall: the
+    right shear at the wall) and, along n, what makes the flux through the
+    faces shared with the fluid neighbours that of the wall (zero where
+    the face lies inside the body). Every weight and the fade vanish where
+    a cell enters or leaves them, so that the ghost velocities change
+    continuously as the body moves through the grid. A ghost cell with no
+    fluid cell in reach (two bodies in contact) moves rigidly.
 
-    with u_r the rigid motion and a the wall-normal derivative of the
-    fluid's velocity relative to the body, fitted to the model w = s a
-    that vanishes on the wall (its tangential derivatives do). The fluid
-    cells of the fit are those outside every body within ghostFitRadius
-    cell sizes of p; where they do not reach a cell size into the fluid
-    (sum of s^2 below h^2) the radius grows by half a cell, twice, so that
-    a ghost cell's velocity never amplifies the fluid's by much more than
-    its depth over a cell. A ghost cell with no fluid cell in reach (two
-    bodies in contact) moves rigidly.
-
-    Every u_c is affine in the body's velocities (V, Omega). The fluid's
-    cells get the force density f_c = (u_c - \hat u_c)/dt; the body takes
-    the momentum that brings its cells from \hat u_c less the deviation
-    delta_c = u_c - u_r(x_c) they were given by the last step to its rigid
-    motion:
+    The fluid's cells get the force density f_c = (u_c - \hat u_c)/dt;
+    the body takes the momentum that brings its cells from \hat u_c, less
+    the deviation delta_c the last step gave them, to its rigid motion:
 
     \f[
         (m - 1) v_p (V - V^*) = - \sum_c V_c (u_r(x_c) - \hat u_c + \delta_c),
@@ -55,9 +51,8 @@ Description
     definite for every m > 0): the step is direct, with no iteration. The
     deviations are the fluid's extension through the wall, not momentum of
     the body: in a steady state they cancel, and a cell entering or leaving
-    the ghost layer inwards as the body moves through the grid (a jump of
-    up to a cell times the wall-normal derivative) does not kick the body
-    (with them in its balance the ten Cate E2 sphere's speed jumped by
+    the ghost layer as the body moves through the grid does not kick the
+    body (with them in its balance the ten Cate E2 sphere's speed jumped by
     2.5 % at each layer of cells it crossed). A cell that leaves the body
     leaves its deviation, about zero as its centre crosses the surface, in
     the fluid, and the body pays for it (contribution::released), so that
@@ -152,6 +147,12 @@ void Foam::fictitiousDomain::findGhostCandidates
                 {
                     fluid.append(c);
                     fluidShift.append(si);
+                    // A cell the surface cuts (its centre less than half a
+                    // cell out) goes to the closest surface
+                    if (bound < 0.5*h)
+                    {
+                        claim(c, b, sqr(bound), false);
+                    }
                 }
             }
         }
@@ -179,7 +180,11 @@ void Foam::fictitiousDomain::releasedDeviations
     forAll(ghostOwner_, c)
     {
         const label o = label(ghostOwner_[c]);
-        if (o < 0 || o >= bodies.size() || cellOwner_[c] == o)
+        if
+        (
+            o < 0 || o >= bodies.size()
+         || (cellOwner_[c] == o && ownerInside_[c])
+        )
         {
             continue;
         }
@@ -210,10 +215,13 @@ void Foam::fictitiousDomain::solveGhostBody
     result& res
 ) const
 {
-    // The inside cells (rank after rank) and the fluid cells around
-    DynamicList<point> xIn, xFluid;
-    DynamicList<scalar> vIn;
-    DynamicList<vector> uIn, devIn, uFluid;
+    // The body's cells, the fluid cells its surface cuts and the other
+    // fluid cells around (data), rank after rank; f and dev follow the
+    // order of the first two groups, part after part
+    DynamicList<point> xIn, xCut, xData;
+    DynamicList<scalar> vIn, vCut;
+    DynamicList<vector> uIn, devIn, uCut, uData;
+    DynamicList<label> order;    // into In (>= 0) or Cut (-1 - index)
     vector released(Zero), releasedMoment(Zero);
     for (const contribution* c : parts)
     {
@@ -223,111 +231,150 @@ void Foam::fictitiousDomain::solveGhostBody
         {
             if (i < c->nInterior)
             {
+                order.append(xIn.size());
                 xIn.append(c->centres[i]);
                 vIn.append(c->volumes[i]);
                 uIn.append(c->u[i]);
                 devIn.append(c->deviation[i]);
             }
+            else if (i < c->nInterior + c->nCut)
+            {
+                order.append(-1 - xCut.size());
+                xCut.append(c->centres[i]);
+                vCut.append(c->volumes[i]);
+                uCut.append(c->u[i]);
+            }
             else
             {
-                xFluid.append(c->centres[i]);
-                uFluid.append(c->u[i]);
+                xData.append(c->centres[i]);
+                uData.append(c->u[i]);
             }
         }
     }
     const label nIn = xIn.size();
     const point& X = B.centre;
+    const scalar R2 = sqr(ghostFitRadius_*h);
 
-    // Each inside cell's velocity after the step, W V + Omega x rt - e
-    scalarField W(nIn, scalar(1));
-    vectorField rt(nIn), e(nIn, Zero);
-    const scalar R1 = ghostFitRadius_*h;
-    const scalarList radii({R1, R1 + 0.5*h, R1 + h});
-    label nGhost = 0, nAlone = 0;
-    for (label c = 0; c < nIn; ++c)
+    // The fit about a surface point p (outward normal n) of the relative
+    // velocity w = u - u_r of the data cells at least half a cell out
+    // (s = n.(x - p) >= h/2, within R = ghostFitRadius cells of p, weights
+    // kappa = (1 - r^2/R^2)^2 of their distance r from p): w = s a_t +
+    // b s^2 n near a no-slip wall (w and its tangential derivatives vanish
+    // on it; by continuity the normal part starts quadratically). Returned
+    // as weights: a = sum alpha_k w_k / s-scale, b = sum beta_k (w_k.n)
+    const auto fit = [&]
+    (
+        const point& p,
+        const vector& n,
+        DynamicList<label>& cells,
+        DynamicList<scalar>& alpha,
+        DynamicList<scalar>& beta
+    )
     {
-        rt[c] = xIn[c] - X;
-        point foot;
-        vector normal;
-        const scalar d = particleGeometry::depth
-        (
-            *B.shape, X, B.R, xIn[c], foot, normal
-        );
-        if (d >= h)
+        cells.clear();
+        alpha.clear();
+        beta.clear();
+        scalar S2 = 0, S4 = 0;
+        forAll(xData, k)
         {
-            continue;
-        }
-        ++nGhost;
-
-        // The sums of the fit within each radius
-        scalarList S2(3, Zero), S1(3, Zero);
-        List<vector> Sx(3, Zero), Su(3, Zero);
-        forAll(xFluid, j)
-        {
-            const vector q = xFluid[j] - foot;
-            const scalar s = normal & q;
+            const vector q = xData[k] - p;
+            const scalar sk = n & q;
             const scalar r2 = magSqr(q);
-            if (s <= 0 || r2 > sqr(radii[2]))
+            if (sk < 0.5*h || r2 >= R2)
             {
                 continue;
             }
-            const label k = r2 <= sqr(radii[0]) ? 0 : r2 <= sqr(radii[1]) ? 1 : 2;
-            S2[k] += s*s;
-            S1[k] += s;
-            Sx[k] += s*(xFluid[j] - X);
-            Su[k] += s*uFluid[j];
+            const scalar kappa = sqr(1 - r2/R2);
+            cells.append(k);
+            alpha.append(kappa*sk);
+            beta.append(kappa*sk*sk);
+            S2 += kappa*sk*sk;
+            S4 += kappa*sqr(sk*sk);
         }
-        scalar s2 = 0, s1 = 0;
-        vector sx(Zero), su(Zero);
-        for (label k = 0; k < 3; ++k)
+        for (scalar& x : alpha)
         {
-            s2 += S2[k];
-            s1 += S1[k];
-            sx += Sx[k];
-            su += Su[k];
-            if (s2 >= h*h)
-            {
-                break;
-            }
+            x /= S2;
         }
-        if (s2 <= 0)
+        for (scalar& x : beta)
         {
-            ++nAlone;
-            continue;
+            x /= S4;
         }
-        W[c] = 1 + d*s1/s2;
-        rt[c] += (d/s2)*sx;
-        e[c] = (d/s2)*su;
-    }
+        return cells.size() > 0;
+    };
+    const auto cross = [](const vector& v)
+    {
+        // [v]x: [v]x a = v x a
+        return tensor(0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0);
+    };
 
-    // The 6x6 balance of the body's momentum, K y = rhs, y = (V, Omega).
-    // The body takes the momentum that brings its cells to its rigid
-    // motion from the fluid step's velocities less the deviations the last
-    // step gave them: the ghost cells' deviations are the fluid's
-    // extension through the wall, not momentum of the body, and a cell
-    // that enters or leaves the ghost layer (the body moving through the
-    // grid) must not kick it
+    // The momentum balance, K y = rhs, y = (V, Omega). The body takes the
+    // momentum that brings its cells to its rigid motion from the fluid
+    // step's velocities less the deviations the last step gave them (see
+    // the description above), and that of the cut cells it forces
     const scalar mvp = B.excessDensity*B.shape->volume();
     const tensor mJ = B.excessDensity*(B.R & B.shape->volumeInertia() & B.R.T());
-    scalar sumV = 0;
-    tensor KVO(Zero), KOO(mJ);
-    vector sumVr(Zero), rhsV = mvp*B.V, rhsO = mJ & B.omega;
+    tensor KVV(mvp*tensor::I), KVO(Zero), KOV(Zero), KOO(mJ);
+    vector rhsV = mvp*B.V - released, rhsO = (mJ & B.omega) - releasedMoment;
     for (label c = 0; c < nIn; ++c)
     {
         const vector r = xIn[c] - X;
         const scalar V = vIn[c];
-        sumV += V;
-        sumVr += V*r;
-        // Omega x r = -[r]x Omega; r x (Omega x r) = ((r.r) I - r r) Omega
+        KVV += V*tensor::I;
+        KVO -= V*cross(r);
+        KOV += V*cross(r);
         KOO += V*(magSqr(r)*tensor::I - (r*r));
         const vector known = uIn[c] - devIn[c];
         rhsV += V*known;
         rhsO += V*(r ^ known);
     }
-    KVO = -tensor(0, -sumVr.z(), sumVr.y(), sumVr.z(), 0, -sumVr.x(), -sumVr.y(), sumVr.x(), 0);
-    const tensor KOV = -KVO;
-    rhsV -= released;
-    rhsO -= releasedMoment;
+
+    // A cut cell, s < h/2 out: u = u_r + s a_t + b s^2 n = P V + Q Omega +
+    // E, affine in the body's velocities (w_k = u_k - V - Omega x r_k)
+    const label nCut = xCut.size();
+    List<tensor> P(nCut, tensor::I), Q(nCut);
+    List<vector> E(nCut, Zero);
+    boolList forced(nCut, false);
+    DynamicList<label> cells;
+    DynamicList<scalar> alpha, beta;
+    for (label j = 0; j < nCut; ++j)
+    {
+        const vector rj = xCut[j] - X;
+        Q[j] = -cross(rj);
+        point p;
+        vector n;
+        const scalar sj = -particleGeometry::depth(*B.shape, X, B.R, xCut[j], p, n);
+        if (!fit(p, n, cells, alpha, beta))
+        {
+            continue;
+        }
+        forced[j] = true;
+        const tensor nn(n*n), tt(tensor::I - nn);
+        scalar sa = 0, sb = 0;
+        vector ua(Zero), ub(Zero), ra(Zero), rb(Zero);
+        forAll(cells, i)
+        {
+            const label k = cells[i];
+            sa += alpha[i];
+            sb += beta[i];
+            ua += alpha[i]*uData[k];
+            ub += beta[i]*uData[k];
+            ra += alpha[i]*(xData[k] - X);
+            rb += beta[i]*(xData[k] - X);
+        }
+        // T_k = sj alpha_k tt + sj^2 beta_k nn; sum T_k, sum T_k u_k,
+        // sum T_k [r_k]x
+        const tensor A = sj*sa*tt + sqr(sj)*sb*nn;
+        E[j] = sj*(tt & ua) + sqr(sj)*(nn & ub);
+        P[j] = tensor::I - A;
+        Q[j] += sj*(tt & cross(ra)) + sqr(sj)*(nn & cross(rb));
+        const scalar V = vCut[j];
+        KVV += V*P[j];
+        KVO += V*Q[j];
+        KOV += V*(cross(rj) & P[j]);
+        KOO += V*(cross(rj) & Q[j]);
+        rhsV += V*(uCut[j] - E[j]);
+        rhsO += V*(rj ^ (uCut[j] - E[j]));
+    }
 
     // The unknown modes: translations 0-2, rotations 3-5; the others keep
     // their predicted values
@@ -340,19 +387,11 @@ void Foam::fictitiousDomain::solveGhostBody
     }
     const auto K = [&](const label a, const label b) -> scalar
     {
-        if (a < 3 && b < 3)
-        {
-            return a == b ? mvp + sumV : 0;
-        }
         if (a < 3)
         {
-            return KVO(a, b - 3);
+            return b < 3 ? KVV(a, b) : KVO(a, b - 3);
         }
-        if (b < 3)
-        {
-            return KOV(a - 3, b);
-        }
-        return KOO(a - 3, b - 3);
+        return b < 3 ? KOV(a - 3, b) : KOO(a - 3, b - 3);
     };
     scalarList y(6);
     for (direction d = 0; d < 3; ++d)
@@ -403,28 +442,129 @@ void Foam::fictitiousDomain::solveGhostBody
     const vector omegaNew(y[3], y[4], y[5]);
     res.dV = Vnew - B.V;
     res.dOmega = omegaNew - B.omega;
+    const auto rigidAt = [&](const point& x)
+    {
+        return Vnew + (omegaNew ^ (x - X));
+    };
 
-    // The cells' new velocities, the force density and the sums
-    f.setSize(nIn);
+    // The ghost cells, within one and a half cells below the surface:
+    // the rigid motion plus the profile of the fit carried through the
+    // wall at its nearest point p, -d a_t tangentially; along n, what makes
+    // the flux through the faces shared with the fluid neighbours (within
+    // 1.1 cells) that of the model, b s_face^2 where the face lies in the
+    // fluid, zero where it lies inside the body. From one to one and a
+    // half cells deep the deviation fades to zero, so that a cell sinking
+    // into the body (or rising out of it) changes smoothly; every weight
+    // of the fit vanishes where a cell enters or leaves it.
+    const auto fadeOf = [&](const scalar d)
+    {
+        return d <= h ? scalar(1) : max(scalar(0), 3 - 2*d/h);
+    };
     dev.setSize(nIn);
-    vector momentum(Zero);
+    dev = Zero;
+    label nGhost = 0, nAlone = 0;
+    const scalar link2 = sqr(1.1*h);
     for (label c = 0; c < nIn; ++c)
     {
-        const vector r = xIn[c] - X;
-        vector uNew = W[c]*Vnew + (omegaNew ^ rt[c]) - e[c];
+        point p;
+        vector n;
+        const scalar d = particleGeometry::depth(*B.shape, X, B.R, xIn[c], p, n);
+        const scalar fade = fadeOf(d);
+        if (fade <= 0)
+        {
+            continue;
+        }
+        ++nGhost;
+        if (!fit(p, n, cells, alpha, beta))
+        {
+            ++nAlone;
+            continue;
+        }
+        vector a(Zero);
+        scalar b = 0;
+        forAll(cells, i)
+        {
+            const label k = cells[i];
+            const vector w = uData[k] - rigidAt(xData[k]);
+            a += alpha[i]*w;
+            b += beta[i]*(w & n);
+        }
+        // The normal part through the faces to the fluid neighbours, the
+        // links weighed by how far out the neighbour is
+        scalar linkSum = 0, linkWeight = 0;
+        const auto addLink = [&](const point& x)
+        {
+            const vector link = x - xIn[c];
+            const scalar sx = n & (x - p);
+            if (sx <= 0 || magSqr(link) > link2)
+            {
+                return;
+            }
+            const scalar sFace = n & (xIn[c] + 0.5*link - p);
+            linkSum += sx*(2*b*sqr(max(sFace, scalar(0))) - b*sqr(sx));
+            linkWeight += sx;
+        };
+        for (const point& x : xData)
+        {
+            addLink(x);
+        }
+        for (const point& x : xCut)
+        {
+            addLink(x);
+        }
+        const scalar wn = linkSum/max(linkWeight, 0.5*h);
+        dev[c] = fade*(-d*(a - (a & n)*n) + wn*n);
         if (twoD_)
         {
-            uNew.z() = uIn[c].z();
+            dev[c].z() = 0;
         }
-        const vector rigid = Vnew + (omegaNew ^ r);
-        dev[c] = uNew - rigid;
-        f[c] = (uNew - uIn[c])/dt;
-        // The force the body feels (see the balance above)
-        const vector lambda = vIn[c]*(rigid - (uIn[c] - devIn[c]))/dt;
-        res.sumLambda += lambda;
-        res.sumMoment += r ^ lambda;
-        momentum += dt*lambda;
     }
+
+    // The new velocities, the force density on the fluid and what the body
+    // takes, in the order of the parts
+    f.setSize(order.size());
+    vectorField devOut(order.size(), Zero);
+    vector momentum(Zero);
+    forAll(order, i)
+    {
+        if (order[i] >= 0)
+        {
+            const label c = order[i];
+            const vector r = xIn[c] - X;
+            const vector rigid = rigidAt(xIn[c]);
+            vector uNew = rigid + dev[c];
+            if (twoD_)
+            {
+                uNew.z() = uIn[c].z();
+            }
+            f[i] = (uNew - uIn[c])/dt;
+            devOut[i] = dev[c];
+            const vector lambda = vIn[c]*(rigid - (uIn[c] - devIn[c]))/dt;
+            res.sumLambda += lambda;
+            res.sumMoment += r ^ lambda;
+            momentum += dt*lambda;
+        }
+        else
+        {
+            const label j = -1 - order[i];
+            f[i] = Zero;
+            if (!forced[j])
+            {
+                continue;
+            }
+            vector uNew = (P[j] & Vnew) + (Q[j] & omegaNew) + E[j];
+            if (twoD_)
+            {
+                uNew.z() = uCut[j].z();
+            }
+            f[i] = (uNew - uCut[j])/dt;
+            const vector lambda = vCut[j]*f[i];
+            res.sumLambda += lambda;
+            res.sumMoment += (xCut[j] - X) ^ lambda;
+            momentum += dt*lambda;
+        }
+    }
+    dev.transfer(devOut);
     res.sumLambda += released/dt;
     res.sumMoment += releasedMoment/dt;
     momentum += released;
@@ -437,14 +577,12 @@ void Foam::fictitiousDomain::solveGhostBody
     // velocity of the body's volume [m/s]
     if (B.free)
     {
-        res.constraintError =
-            mag(mvp*res.dV + momentum)/max(B.shape->volume(), VSMALL);
+        vector m = mvp*res.dV + momentum;
         if (twoD_)
         {
-            vector m = mvp*res.dV + momentum;
             m.z() = 0;
-            res.constraintError = mag(m)/max(B.shape->volume(), VSMALL);
         }
+        res.constraintError = mag(m)/max(B.shape->volume(), VSMALL);
     }
 }
 
