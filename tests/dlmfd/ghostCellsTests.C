@@ -14,8 +14,9 @@ Description
     (surfaceTreatment ghostCells): a shear flow along a face is carried
     through the wall where the face is; every cell within a cell of the
     surface has fluid to fit, whatever the resolution (no point is left
-    out); only the fluid cells the surface cuts (centres less than half a
-    cell out) are forced, in a two-cell gap between two cubes too.
+    out); no fluid cell is forced, in a two-cell gap between two cubes
+    neither; with ghostCutCells, only those the surface cuts (centres less
+    than half a cell out).
 
 \*---------------------------------------------------------------------------*/
 
@@ -160,7 +161,65 @@ TEST(ghostCells, everySurfaceCellHasFluidToFitAtAnyResolution)
 }
 
 
-TEST(ghostCells, onlyCutFluidCellsAreForcedNotEvenInATwoCellGap)
+TEST(ghostCells, fluidCellsAreNeverForcedNotEvenInATwoCellGap)
+{
+    // By default (ghostCutCells off) no fluid cell is forced at all, those
+    // of a two-cell gap between two cubes included; the cubes' own cells
+    // take the whole force
+    test::foamTestCase tc;
+    const fvMesh& mesh = tc.makeBoxMesh(24, 24, 24, vector::one);
+    tmp<volVectorField> tU = zeroU(mesh);
+    volVectorField& U = tU.ref();
+    using constant::mathematical::twoPi;
+    forAll(U, c)
+    {
+        const point& x = mesh.C()[c];
+        U[c] = vector(0.1*std::sin(twoPi*x.y()), 0.03, 0.08*std::sin(twoPi*x.x()));
+    }
+    const vectorField before(U.primitiveField());
+    const scalar h = 1.0/24, edge = 0.3;
+    particleShapes::platonicSolid cube("cube", "cube", edge);
+    List<fictitiousDomain::body> bodies(2);
+    for (auto& b : bodies)
+    {
+        b.shape = &cube;
+        b.excessDensity = 1;
+    }
+    bodies[0].centre = point(0.5 - h - edge/2 + 0.01*h, 0.5, 0.5);
+    bodies[1].centre = point(0.5 + h + edge/2 + 0.01*h, 0.5, 0.5);
+    dictionary dict(ghostCells());
+    fictitiousDomain fd(mesh, dict);
+    const List<fictitiousDomain::result>& res = fd.solve(U, bodies, 0.01);
+    label outside = 0, inGap = 0;
+    forAll(U, c)
+    {
+        const point& x = mesh.C()[c];
+        bool inside = false;
+        for (const auto& b : bodies)
+        {
+            inside = inside || particleGeometry::contains(cube, b.centre, b.R, x);
+        }
+        if (inside)
+        {
+            continue;
+        }
+        ++outside;
+        inGap +=
+            mag(x.x() - 0.5) < h && mag(x.y() - 0.5) < edge/2
+         && mag(x.z() - 0.5) < edge/2;
+        EXPECT_EQ(mag(fd.source()[c]), 0) << str(x);
+        EXPECT_EQ(mag(U[c] - before[c]), 0) << str(x);
+    }
+    EXPECT_GT(inGap, 20);
+    EXPECT_GT(outside, 10000);
+    for (const auto& r : res)
+    {
+        EXPECT_GT(mag(r.sumLambda), 0);
+    }
+}
+
+
+TEST(ghostCells, withCutCellsOnlyCutFluidCellsAreForcedEvenInATwoCellGap)
 {
     // Two cubes face to face, two cells apart, in a swirling flow: the force
     // density is zero in every cell more than half a cell out of both (the
@@ -195,6 +254,7 @@ TEST(ghostCells, onlyCutFluidCellsAreForcedNotEvenInATwoCellGap)
     bodies[1].centre = point(0.5 + h + edge/2 + 0.01*h, 0.5, 0.5);
 
     dictionary dict(ghostCells());
+    dict.add("ghostCutCells", true);
     fictitiousDomain fd(mesh, dict);
     const List<fictitiousDomain::result>& res = fd.solve(U, bodies, 0.01);
 

@@ -308,6 +308,7 @@ Foam::fictitiousDomain::fictitiousDomain
         )
     ),
     ghostFitRadius_(dict.getOrDefault<scalar>("ghostFitRadius", 2.5)),
+    forceCutCells_(dict.getOrDefault<Switch>("ghostCutCells", false)),
     surfacePoints_(dict.getOrDefault<Switch>("surfacePoints", true)),
     surfaceSpacing_(dict.getOrDefault<scalar>("surfacePointSpacing", 1)),
     stencilRadius_(dict.getOrDefault<scalar>("surfaceStencilRadius", 1.2)),

@@ -148,8 +148,9 @@ void Foam::fictitiousDomain::findGhostCandidates
                     fluid.append(c);
                     fluidShift.append(si);
                     // A cell the surface cuts (its centre less than half a
-                    // cell out) goes to the closest surface
-                    if (bound < 0.5*h)
+                    // cell out) goes to the closest surface, which forces
+                    // it (ghostCutCells on)
+                    if (forceCutCells_ && bound < 0.5*h)
                     {
                         claim(c, b, sqr(bound), false);
                     }
