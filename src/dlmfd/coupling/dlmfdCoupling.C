@@ -323,6 +323,15 @@ Foam::dlmfdCoupling::dlmfdCoupling
 
     const fileName particleFile(readParticles());
     checkPlanarParticles(particleFile);
+
+    // The multipliers' force density (and the ghost cells' deviations)
+    // belong with the particles the solver wrote at this time: with
+    // particles placed anew (\<time\>/particles, not uniform/particles)
+    // they would hold bodies where there are none (issue 20, finding e)
+    if (particleFile.name() == "particles" && particleFile.path().name() != "uniform")
+    {
+        fd_.discardStoredState(particleFile);
+    }
     Fh_.setSize(granular_.size(), Zero);
     Th_.setSize(granular_.size(), Zero);
 

@@ -420,6 +420,25 @@ Foam::fictitiousDomain::fictitiousDomain
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::fictitiousDomain::discardStoredState(const fileName& particleFile)
+{
+    const bool stored =
+        gMax(mag(source_.primitiveField())) > 0
+     || gMax(mag(deviation_.primitiveField())) > 0;
+    if (stored)
+    {
+        Info<< "DLM/FD: " << source_.name() << " and " << deviation_.name()
+            << " of time " << mesh_.time().timeName() << " set to zero:"
+            << " the particles come from " << particleFile
+            << ", not from the solver's uniform/particles of that time"
+            << endl;
+    }
+    source_ == dimensionedVector(source_.dimensions(), Zero);
+    deviation_ == dimensionedVector(deviation_.dimensions(), Zero);
+    ghostOwner_ == dimensionedScalar("none", dimless, -1);
+}
+
+
 void Foam::fictitiousDomain::setPeriodicity(const vector& period)
 {
     for (direction d = 0; d < vector::nComponents; ++d)
