@@ -66,6 +66,54 @@ tmp<volVectorField> zeroU(const fvMesh& mesh)
     );
 }
 
+//- Two cubes of edge 0.3 face to face along x, two cells apart (their faces
+//- 0.01 cell off the cell faces), in a unit box of 24^3 cells, and a
+//- swirling flow there
+struct twoCubesInAGap
+{
+    static constexpr scalar h = 1.0/24;
+    static constexpr scalar edge = 0.3;
+    test::foamTestCase tc;
+    const fvMesh& mesh;
+    tmp<volVectorField> tU;
+    particleShapes::platonicSolid cube;
+    List<fictitiousDomain::body> bodies;
+
+    twoCubesInAGap()
+    :
+        mesh(tc.makeBoxMesh(24, 24, 24, vector::one)),
+        tU(zeroU(mesh)),
+        cube("cube", "cube", edge),
+        bodies(2)
+    {
+        using constant::mathematical::twoPi;
+        forAll(tU(), c)
+        {
+            const point& x = mesh.C()[c];
+            tU.ref()[c] = vector
+            (
+                0.1*std::sin(twoPi*x.y()),
+                0.05*std::cos(twoPi*x.z()) + 0.03,
+                0.08*std::sin(twoPi*x.x())
+            );
+        }
+        for (auto& b : bodies)
+        {
+            b.shape = &cube;
+            b.excessDensity = 1;
+        }
+        bodies[0].centre = point(0.5 - h - edge/2 + 0.01*h, 0.5, 0.5);
+        bodies[1].centre = point(0.5 + h + edge/2 + 0.01*h, 0.5, 0.5);
+    }
+
+    //- Is x in the gap between the faces (away from their edges)?
+    static bool inGap(const point& x, const scalar margin)
+    {
+        return mag(x.x() - 0.5) < h && mag(x.y() - 0.5) < edge/2 - margin
+            && mag(x.z() - 0.5) < edge/2 - margin;
+    }
+};
+
 } // End anonymous namespace
 
 
@@ -166,47 +214,27 @@ TEST(ghostCells, fluidCellsAreNeverForcedNotEvenInATwoCellGap)
     // By default (ghostCutCells off) no fluid cell is forced at all, those
     // of a two-cell gap between two cubes included; the cubes' own cells
     // take the whole force
-    test::foamTestCase tc;
-    const fvMesh& mesh = tc.makeBoxMesh(24, 24, 24, vector::one);
-    tmp<volVectorField> tU = zeroU(mesh);
-    volVectorField& U = tU.ref();
-    using constant::mathematical::twoPi;
-    forAll(U, c)
-    {
-        const point& x = mesh.C()[c];
-        U[c] = vector(0.1*std::sin(twoPi*x.y()), 0.03, 0.08*std::sin(twoPi*x.x()));
-    }
+    twoCubesInAGap g;
+    volVectorField& U = g.tU.ref();
     const vectorField before(U.primitiveField());
-    const scalar h = 1.0/24, edge = 0.3;
-    particleShapes::platonicSolid cube("cube", "cube", edge);
-    List<fictitiousDomain::body> bodies(2);
-    for (auto& b : bodies)
-    {
-        b.shape = &cube;
-        b.excessDensity = 1;
-    }
-    bodies[0].centre = point(0.5 - h - edge/2 + 0.01*h, 0.5, 0.5);
-    bodies[1].centre = point(0.5 + h + edge/2 + 0.01*h, 0.5, 0.5);
     dictionary dict(ghostCells());
-    fictitiousDomain fd(mesh, dict);
-    const List<fictitiousDomain::result>& res = fd.solve(U, bodies, 0.01);
+    fictitiousDomain fd(g.mesh, dict);
+    const List<fictitiousDomain::result>& res = fd.solve(U, g.bodies, 0.01);
     label outside = 0, inGap = 0;
     forAll(U, c)
     {
-        const point& x = mesh.C()[c];
+        const point& x = g.mesh.C()[c];
         bool inside = false;
-        for (const auto& b : bodies)
+        for (const auto& b : g.bodies)
         {
-            inside = inside || particleGeometry::contains(cube, b.centre, b.R, x);
+            inside = inside || particleGeometry::contains(g.cube, b.centre, b.R, x);
         }
         if (inside)
         {
             continue;
         }
         ++outside;
-        inGap +=
-            mag(x.x() - 0.5) < h && mag(x.y() - 0.5) < edge/2
-         && mag(x.z() - 0.5) < edge/2;
+        inGap += twoCubesInAGap::inGap(x, 0);
         EXPECT_EQ(mag(fd.source()[c]), 0) << str(x);
         EXPECT_EQ(mag(U[c] - before[c]), 0) << str(x);
     }
@@ -221,59 +249,32 @@ TEST(ghostCells, fluidCellsAreNeverForcedNotEvenInATwoCellGap)
 
 TEST(ghostCells, withCutCellsOnlyCutFluidCellsAreForcedEvenInATwoCellGap)
 {
-    // Two cubes face to face, two cells apart, in a swirling flow: the force
-    // density is zero in every cell more than half a cell out of both (the
-    // cells their surfaces do not cut), and the fluid there keeps its
-    // velocity; in the gap, one row of cells lies 0.49 cells from a face
-    // (cut, forced) and the other 0.51 cells (free)
-    test::foamTestCase tc;
-    const fvMesh& mesh = tc.makeBoxMesh(24, 24, 24, vector::one);
-    tmp<volVectorField> tU = zeroU(mesh);
-    volVectorField& U = tU.ref();
-    using constant::mathematical::twoPi;
-    forAll(U, c)
-    {
-        const point& x = mesh.C()[c];
-        U[c] = vector
-        (
-            0.1*std::sin(twoPi*x.y()),
-            0.05*std::cos(twoPi*x.z()) + 0.03,
-            0.08*std::sin(twoPi*x.x())
-        );
-    }
+    // ghostCutCells on: the force density is zero in every cell more than
+    // half a cell out of both cubes (the cells their surfaces do not cut),
+    // and the fluid there keeps its velocity; in the gap, one row of cells
+    // lies 0.49 cells from a face (cut, forced) and the other 0.51 (free)
+    twoCubesInAGap g;
+    volVectorField& U = g.tU.ref();
     const vectorField before(U.primitiveField());
-    const scalar h = 1.0/24, edge = 0.3;
-    particleShapes::platonicSolid cube("cube", "cube", edge);
-    List<fictitiousDomain::body> bodies(2);
-    for (auto& b : bodies)
-    {
-        b.shape = &cube;
-        b.excessDensity = 1;
-    }
-    bodies[0].centre = point(0.5 - h - edge/2 + 0.01*h, 0.5, 0.5);
-    bodies[1].centre = point(0.5 + h + edge/2 + 0.01*h, 0.5, 0.5);
-
+    const scalar h = twoCubesInAGap::h;
     dictionary dict(ghostCells());
     dict.add("ghostCutCells", true);
-    fictitiousDomain fd(mesh, dict);
-    const List<fictitiousDomain::result>& res = fd.solve(U, bodies, 0.01);
-
+    fictitiousDomain fd(g.mesh, dict);
+    const List<fictitiousDomain::result>& res = fd.solve(U, g.bodies, 0.01);
     label free = 0, freeInGap = 0, cutInGap = 0;
     forAll(U, c)
     {
-        const point& x = mesh.C()[c];
+        const point& x = g.mesh.C()[c];
         scalar out = GREAT;
-        for (const auto& b : bodies)
+        for (const auto& b : g.bodies)
         {
             out = min
             (
                 out,
-                particleGeometry::outsideDistanceBound(cube, b.centre, b.R, x)
+                particleGeometry::outsideDistanceBound(g.cube, b.centre, b.R, x)
             );
         }
-        const bool inGap =
-            mag(x.x() - 0.5) < h && mag(x.y() - 0.5) < edge/2 - h
-         && mag(x.z() - 0.5) < edge/2 - h;
+        const bool inGap = twoCubesInAGap::inGap(x, h);
         if (out < 0.5*h)
         {
             cutInGap += inGap && out > 0 && mag(fd.source()[c]) > 0;

@@ -588,20 +588,12 @@ void Foam::fictitiousDomain::surfacePointsOf
 }
 
 
-void Foam::fictitiousDomain::findCandidates
+void Foam::fictitiousDomain::startCandidates
 (
     const UList<body>& bodies,
     candidates& cand
 )
 {
-    if (treatment_ == surfaceTreatment::ghostCells)
-    {
-        findGhostCandidates(bodies, cand);
-        return;
-    }
-
-    const vectorField& C = mesh_.C();
-
     // The claims of the last step are undone
     for (const label c : touched_)
     {
@@ -618,6 +610,23 @@ void Foam::fictitiousDomain::findCandidates
     cand.interiorShift.setSize(n);
     cand.stencils.setSize(n);
     cand.stencilShifts.setSize(n);
+}
+
+
+void Foam::fictitiousDomain::findCandidates
+(
+    const UList<body>& bodies,
+    candidates& cand
+)
+{
+    startCandidates(bodies, cand);
+    if (treatment_ == surfaceTreatment::ghostCells)
+    {
+        findGhostCandidates(bodies, cand);
+        return;
+    }
+
+    const vectorField& C = mesh_.C();
 
     DynamicList<label> near;
     DynamicList<point> pts;

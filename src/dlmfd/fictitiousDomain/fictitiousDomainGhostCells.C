@@ -74,23 +74,8 @@ void Foam::fictitiousDomain::findGhostCandidates
     candidates& cand
 )
 {
+    // (startCandidates has undone the last claims and sized cand)
     const vectorField& C = mesh_.C();
-
-    for (const label c : touched_)
-    {
-        cellOwner_[c] = -1;
-        ownerDist2_[c] = GREAT;
-        ownerInside_[c] = false;
-    }
-    touched_.clear();
-
-    const label n = bodies.size();
-    cand.h = cellSizes(bodies);
-    cand.shifts.setSize(n);
-    cand.interior.setSize(n);
-    cand.interiorShift.setSize(n);
-    cand.stencils.setSize(n);
-    cand.stencilShifts.setSize(n);
 
     // Every body's inside cells first, so that the fluid cells of the
     // next pass are those inside no body
