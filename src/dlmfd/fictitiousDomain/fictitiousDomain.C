@@ -291,6 +291,25 @@ bool Foam::fictitiousDomain::fitWeights
 }
 
 
+Foam::IOobject Foam::fictitiousDomain::ghostFieldIO
+(
+    const fvMesh& mesh,
+    const word& name
+) const
+{
+    // Read and written with the ghost cells only
+    const bool ghost = treatment_ == surfaceTreatment::ghostCells;
+    return IOobject
+    (
+        name,
+        mesh.time().timeName(),
+        mesh,
+        ghost ? IOobject::READ_IF_PRESENT : IOobject::NO_READ,
+        ghost ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
+    );
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::fictitiousDomain::fictitiousDomain
@@ -337,31 +356,13 @@ Foam::fictitiousDomain::fictitiousDomain
     ),
     deviation_
     (
-        IOobject
-        (
-            "ghostDeviation",
-            mesh.time().timeName(),
-            mesh,
-            treatment_ == surfaceTreatment::ghostCells
-          ? IOobject::READ_IF_PRESENT : IOobject::NO_READ,
-            treatment_ == surfaceTreatment::ghostCells
-          ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
-        ),
+        ghostFieldIO(mesh, "ghostDeviation"),
         mesh,
         dimensionedVector(dimVelocity, Zero)
     ),
     ghostOwner_
     (
-        IOobject
-        (
-            "ghostOwner",
-            mesh.time().timeName(),
-            mesh,
-            treatment_ == surfaceTreatment::ghostCells
-          ? IOobject::READ_IF_PRESENT : IOobject::NO_READ,
-            treatment_ == surfaceTreatment::ghostCells
-          ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
-        ),
+        ghostFieldIO(mesh, "ghostOwner"),
         mesh,
         dimensionedScalar("none", dimless, -1)
     ),
