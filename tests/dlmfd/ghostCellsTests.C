@@ -21,6 +21,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "foamTestCase.H"
+#include "testInput.H"
 #include "fictitiousDomain.H"
 #include "particleGeometry.H"
 #include "platonicSolid.H"
@@ -293,6 +294,35 @@ TEST(ghostCells, withCutCellsOnlyCutFluidCellsAreForcedEvenInATwoCellGap)
         EXPECT_GT(mag(r.sumLambda), 0);
         EXPECT_EQ(r.nSurfaceDropped, 0);
     }
+}
+
+
+TEST(ghostCells, badSettingsAreRefusedNamingTheValidOnes)
+{
+    // A misspelt treatment lists the valid names; a fit narrower than one
+    // and a half cells (it must reach a cell beyond the cut cells) is
+    // refused with the keyword, the value and what is allowed
+    test::foamTestCase tc;
+    const fvMesh& mesh = tc.makeBoxMesh(8, 8, 8, vector::one);
+    FatalError.throwExceptions();
+    FatalIOError.throwExceptions();
+    const std::string typo = testInput::errorOf([&]
+    {
+        fictitiousDomain fd(mesh, testInput::parse("surfaceTreatment ghostCell;"));
+    });
+    EXPECT_NE(typo.find("ghostCell"), std::string::npos) << typo;
+    EXPECT_NE(typo.find("fluidStencil"), std::string::npos) << typo;
+    EXPECT_NE(typo.find("ghostCells"), std::string::npos) << typo;
+    const std::string narrow = testInput::errorOf([&]
+    {
+        fictitiousDomain fd
+        (
+            mesh,
+            testInput::parse("surfaceTreatment ghostCells; ghostFitRadius 1;")
+        );
+    });
+    EXPECT_NE(narrow.find("ghostFitRadius = 1"), std::string::npos) << narrow;
+    EXPECT_NE(narrow.find(">= 1.5"), std::string::npos) << narrow;
 }
 
 
