@@ -172,7 +172,7 @@ TEST(hookeanSpringDashpot, contactTimeAndDampingFollowEquation21)
         makeLaw("hookeanSpringDashpot", "kn 5e3; en 0.8; muc 0.3;");
 
     // T_c = pi/Foam::sqrt(kn/M - gamma_n^2), gamma_n of eq 21; equivalently
-    // kn = M (pi^2 + ln^2 en)/T_c^2 (refdata/dem-analytic.md)
+    // kn = M (pi^2 + ln^2 en)/T_c^2 (doc/refdata/dem-analytic.md)
     const scalar Tc = law->contactTime(M);
     EXPECT_NEAR(kn, M*(sqr(pi) + sqr(Foam::log(en)))/sqr(Tc), 1e-9*kn);
 

@@ -11,7 +11,7 @@ License
 
 Description
     Physics of the whole discrete element solver (granularSystem): the
-    closed forms of ../shared/refdata/dem-analytic.md (head-on restitution
+    closed forms of doc/refdata/dem-analytic.md (head-on restitution
     and duration, bouncing-ball peaks, sliding to rolling), energy of
     elastic collisions, momentum, resting cubes, contacts across periodic
     boundaries and an exact restart. Every tolerance is stated where it is
