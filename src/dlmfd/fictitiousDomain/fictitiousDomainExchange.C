@@ -1,0 +1,445 @@
+/*---------------------------------------------------------------------------*\
+  dlmfdFoam: DLM/FD particle-resolved simulation of particulate flows
+-------------------------------------------------------------------------------
+License
+    This file is part of dlmfdFoam, an extension of OpenFOAM.
+
+    dlmfdFoam is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by the
+    Free Software Foundation, either version 3 of the License, or (at your
+    option) any later version. See <http://www.gnu.org/licenses/>.
+
+Description
+    The parallel exchange of Foam::fictitiousDomain: each rank's cells of
+    a body sent to the rank that solves it, the forces sent back, the
+    results gathered on the master; and the step itself (solve).
+
+\*---------------------------------------------------------------------------*/
+
+#include "fictitiousDomain.H"
+#include "particleGeometry.H"
+#include "smallDenseSolve.H"
+#include "fictitiousDomainParts.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+
+Ostream& operator<<(Ostream& os, const fictitiousDomain::contribution& c)
+{
+    os  << c.body << token::SPACE << c.centres << token::SPACE << c.volumes
+        << token::SPACE << c.u << token::SPACE << c.nInterior
+        << token::SPACE << c.nCut
+        << token::SPACE << c.deviation << token::SPACE << c.released
+        << token::SPACE << c.releasedMoment
+        << token::SPACE << c.surfacePoint << token::SPACE << c.stencilStart
+        << token::SPACE << c.stencilCell;
+    return os;
+}
+
+
+Istream& operator>>(Istream& is, fictitiousDomain::contribution& c)
+{
+    is  >> c.body >> c.centres >> c.volumes >> c.u >> c.nInterior
+        >> c.nCut
+        >> c.deviation >> c.released >> c.releasedMoment
+        >> c.surfacePoint >> c.stencilStart >> c.stencilCell;
+    return is;
+}
+
+} // End namespace Foam
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::fictitiousDomain::collect
+(
+    const label b,
+    const candidates& cand,
+    const vectorField& u,
+    labelList& localIndex,
+    contribution& con,
+    labelList& cells
+) const
+{
+    const vectorField& C = mesh_.C();
+    const scalarField& V = mesh_.V();
+    const List<vector>& shifts = cand.shifts[b];
+
+    DynamicList<label> cellList;
+    DynamicList<point> centres;
+    const auto localOf = [&](const label c, const label si)
+    {
+        if (localIndex[c] < 0)
+        {
+            localIndex[c] = cellList.size();
+            cellList.append(c);
+            centres.append(C[c] + shifts[si]);
+        }
+        return localIndex[c];
+    };
+
+    forAll(cand.interior[b], i)
+    {
+        const label c = cand.interior[b][i];
+        if (cellOwner_[c] == b)
+        {
+            localOf(c, cand.interiorShift[b][i]);
+        }
+    }
+    con.nInterior = cellList.size();
+
+    DynamicList<label> surfacePoint, stencilStart, stencilCell;
+    label nSent = -1;
+    if (treatment_ == surfaceTreatment::ghostCells)
+    {
+        // The fluid cells its surface cuts (claimed by it: the closest
+        // surface), forced and written back; then the other fluid cells
+        // near it (in no body), data only
+        const labelList& near = cand.stencils[b][0];
+        forAll(near, i)
+        {
+            const label c = near[i];
+            if (cellOwner_[c] == b && !ownerInside_[c])
+            {
+                localOf(c, cand.stencilShifts[b][0][i]);
+            }
+        }
+        con.nCut = cellList.size() - con.nInterior;
+        nSent = cellList.size();
+        forAll(near, i)
+        {
+            const label c = near[i];
+            if (cellOwner_[c] < 0 || !ownerInside_[c])
+            {
+                localOf(c, cand.stencilShifts[b][0][i]);
+            }
+        }
+    }
+    else
+    {
+        forAll(cand.stencils[b], k)
+        {
+            const labelList& st = cand.stencils[b][k];
+            const label start = stencilCell.size();
+            forAll(st, i)
+            {
+                if (cellOwner_[st[i]] == b)
+                {
+                    stencilCell.append
+                    (
+                        localOf(st[i], cand.stencilShifts[b][k][i])
+                    );
+                }
+            }
+            if (stencilCell.size() > start)
+            {
+                surfacePoint.append(k);
+                stencilStart.append(start);
+            }
+        }
+    }
+    stencilStart.append(stencilCell.size());
+
+    for (const label c : cellList)
+    {
+        localIndex[c] = -1;
+    }
+    con.body = b;
+    if (treatment_ == surfaceTreatment::ghostCells)
+    {
+        // A cell's deviation is this body's only if it held the cell
+        con.deviation.setSize(con.nInterior);
+        for (label i = 0; i < con.nInterior; ++i)
+        {
+            const label c = cellList[i];
+            con.deviation[i] =
+                label(ghostOwner_[c]) == b ? deviation_[c] : Zero;
+        }
+    }
+    con.centres.transfer(centres);
+    con.volumes.setSize(cellList.size());
+    con.u.setSize(cellList.size());
+    forAll(cellList, i)
+    {
+        con.volumes[i] = V[cellList[i]];
+        con.u[i] = u[cellList[i]];
+    }
+    con.surfacePoint.transfer(surfacePoint);
+    con.stencilStart.transfer(stencilStart);
+    con.stencilCell.transfer(stencilCell);
+    cells.transfer(cellList);
+    if (nSent >= 0)
+    {
+        // Only the inside cells get a force back
+        cells.setSize(nSent);
+    }
+}
+
+
+void Foam::fictitiousDomain::gatherResults()
+{
+    // Each body was solved on one rank, zero elsewhere: sums give it
+    constexpr label nValues = 17;
+    scalarList values(nValues*results_.size(), Zero);
+    forAll(results_, b)
+    {
+        const result& r = results_[b];
+        scalar* v = &values[nValues*b];
+        for (direction d = 0; d < vector::nComponents; ++d)
+        {
+            v[d] = r.dV[d];
+            v[3 + d] = r.dOmega[d];
+            v[6 + d] = r.sumLambda[d];
+            v[9 + d] = r.sumMoment[d];
+        }
+        v[12] = r.nInterior;
+        v[13] = r.nSurface;
+        v[14] = r.nSurfaceDropped;
+        v[15] = r.iterations;
+        v[16] = r.constraintError;
+    }
+    Pstream::listCombineGather(values, plusEqOp<scalar>());
+    if (!Pstream::master())
+    {
+        return;
+    }
+    forAll(results_, b)
+    {
+        result& r = results_[b];
+        const scalar* v = &values[nValues*b];
+        for (direction d = 0; d < vector::nComponents; ++d)
+        {
+            r.dV[d] = v[d];
+            r.dOmega[d] = v[3 + d];
+            r.sumLambda[d] = v[6 + d];
+            r.sumMoment[d] = v[9 + d];
+        }
+        r.nInterior = label(v[12]);
+        r.nSurface = label(v[13]);
+        r.nSurfaceDropped = label(v[14]);
+        r.iterations = label(v[15]);
+        r.constraintError = v[16];
+    }
+}
+
+
+const Foam::List<Foam::fictitiousDomain::result>&
+Foam::fictitiousDomain::solve
+(
+    volVectorField& U,
+    const UList<body>& bodies,
+    const scalar dt
+)
+{
+    const label nProcs = Pstream::nProcs();
+    const label me = Pstream::myProcNo();
+    const auto solverOf = [&](const label b) { return b % nProcs; };
+
+    // The fluid without the previous multipliers' force
+    vectorField& u = U.primitiveFieldRef();
+    u -= dt*source_.primitiveField();
+    source_.primitiveFieldRef() = Zero;
+
+
+    // Every body's candidate points on this rank, and the cells shared out
+    candidates cand;
+    findCandidates(bodies, cand);
+
+    results_.setSize(bodies.size());
+    for (result& r : results_)
+    {
+        r = result();
+    }
+
+    // This rank's cells of each body, to the rank that solves it
+    List<List<labelList>> sentCells(nProcs);
+    List<labelList> sentBodies(nProcs);
+    {
+        List<DynamicList<labelList>> cellsTo(nProcs);
+        List<DynamicList<label>> bodiesTo(nProcs);
+        PstreamBuffers toSolvers(Pstream::commsTypes::nonBlocking);
+        List<DynamicList<contribution>> outgoing(nProcs);
+        labelList localIndex(mesh_.nCells(), -1);
+        List<vector> released, releasedMoment;
+        if (treatment_ == surfaceTreatment::ghostCells)
+        {
+            releasedDeviations(bodies, released, releasedMoment);
+        }
+        forAll(bodies, b)
+        {
+            contribution con;
+            labelList cells;
+            collect(b, cand, u, localIndex, con, cells);
+            if (released.size())
+            {
+                con.released = released[b];
+                con.releasedMoment = releasedMoment[b];
+            }
+            if (con.centres.empty() && con.released == vector::zero)
+            {
+                continue;
+            }
+            result& res = results_[b];
+            res.interiorCells = SubList<label>(cells, con.nInterior);
+            res.interiorCentres = SubList<point>(con.centres, con.nInterior);
+            const label q = solverOf(b);
+            bodiesTo[q].append(b);
+            cellsTo[q].append(std::move(cells));
+            outgoing[q].append(std::move(con));
+        }
+        // The deviations of the last step are in the contributions now;
+        // this step sets those of the cells inside a body
+        deviation_.primitiveFieldRef() = Zero;
+        ghostOwner_.primitiveFieldRef() = -1;
+        for (label q = 0; q < nProcs; ++q)
+        {
+            sentCells[q].transfer(cellsTo[q]);
+            sentBodies[q].transfer(bodiesTo[q]);
+            // One by one: a List of them would be checked for equal
+            // elements, which contributions do not compare
+            UOPstream os(q, toSolvers);
+            os << outgoing[q].size();
+            for (const contribution& con : outgoing[q])
+            {
+                os << con;
+            }
+        }
+        clockTime clock;
+        toSolvers.finishedSends();
+        commSeconds_ += clock.timeIncrement();
+
+        // The bodies this rank solves, from the cells of every rank
+        List<List<contribution>> incoming(nProcs);
+        for (label r = 0; r < nProcs; ++r)
+        {
+            UIPstream is(r, toSolvers);
+            label size = 0;
+            is >> size;
+            incoming[r].setSize(size);
+            for (contribution& con : incoming[r])
+            {
+                is >> con;
+            }
+        }
+        List<DynamicList<const contribution*>> partsOf(bodies.size());
+        List<DynamicList<labelPair>> whereFrom(bodies.size());
+        forAll(incoming, r)
+        {
+            forAll(incoming[r], j)
+            {
+                const label b = incoming[r][j].body;
+                partsOf[b].append(&incoming[r][j]);
+                whereFrom[b].append(labelPair(r, j));
+            }
+        }
+
+        // Solve, and send each rank the force density of its cells (and,
+        // with ghost cells, their deviation from the rigid motion)
+        const bool ghost = treatment_ == surfaceTreatment::ghostCells;
+        List<List<vectorField>> forces(nProcs), deviations(nProcs);
+        forAll(incoming, r)
+        {
+            forces[r].setSize(incoming[r].size());
+            deviations[r].setSize(ghost ? incoming[r].size() : 0);
+        }
+        forAll(bodies, b)
+        {
+            if (solverOf(b) != me || partsOf[b].empty())
+            {
+                continue;
+            }
+            result& res = results_[b];
+            vectorField f, dev;
+            if (ghost)
+            {
+                solveGhostBody
+                (
+                    bodies[b], cand.h[b], partsOf[b], dt, f, dev, res
+                );
+            }
+            else
+            {
+                collocationSet s;
+                assemble(bodies[b], cand.h[b], partsOf[b], s, res);
+                f.setSize(s.u.size(), Zero);
+                if (s.points.size())
+                {
+                    solveBody(b, bodies[b], s, dt, f, res);
+                }
+            }
+            label start = 0;
+            for (const labelPair& rj : whereFrom[b])
+            {
+                const contribution& con = incoming[rj.first()][rj.second()];
+                const label size =
+                    ghost ? con.nInterior + con.nCut : con.u.size();
+                forces[rj.first()][rj.second()] =
+                    SubField<vector>(f, size, start);
+                if (ghost)
+                {
+                    deviations[rj.first()][rj.second()] =
+                        SubField<vector>(dev, size, start);
+                }
+                start += size;
+            }
+        }
+
+        clock.timeIncrement();
+        PstreamBuffers toOwners(Pstream::commsTypes::nonBlocking);
+        for (label r = 0; r < nProcs; ++r)
+        {
+            UOPstream os(r, toOwners);
+            os << forces[r] << deviations[r];
+        }
+        toOwners.finishedSends();
+        commSeconds_ += clock.timeIncrement();
+        vectorField& src = source_.primitiveFieldRef();
+        for (label q = 0; q < nProcs; ++q)
+        {
+            List<vectorField> back, backDev;
+            UIPstream is(q, toOwners);
+            is >> back >> backDev;
+            forAll(back, j)
+            {
+                const labelList& cells = sentCells[q][j];
+                forAll(cells, i)
+                {
+                    src[cells[i]] = back[j][i];
+                    u[cells[i]] += dt*back[j][i];
+                }
+            }
+            forAll(backDev, j)
+            {
+                // The owner's bodies in the order it sent them
+                const label b = sentBodies[q][j];
+                // The body's own cells first, then the fluid cells it cut
+                // (fluid: no deviation of the body's)
+                const label nInside = results_[b].interiorCells.size();
+                results_[b].interiorDeviation =
+                    SubField<vector>(backDev[j], nInside);
+                const labelList& cells = sentCells[q][j];
+                for (label i = 0; i < nInside; ++i)
+                {
+                    deviation_[cells[i]] = backDev[j][i];
+                    ghostOwner_[cells[i]] = b;
+                }
+            }
+        }
+    }
+
+    {
+        clockTime clock;
+        gatherResults();
+        commSeconds_ += clock.elapsedTime();
+    }
+
+    U.correctBoundaryConditions();
+    source_.correctBoundaryConditions();
+    deviation_.correctBoundaryConditions();
+    ghostOwner_.correctBoundaryConditions();
+    return results_;
+}
+
+// ************************************************************************* //
