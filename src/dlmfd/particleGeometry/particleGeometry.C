@@ -225,48 +225,6 @@ Foam::scalar Foam::particleGeometry::depth
 }
 
 
-bool Foam::particleGeometry::facePlanes
-(
-    const particleShape& shape,
-    const point& x,
-    const tensor& R,
-    List<vector>& normals,
-    scalarList& offsets
-)
-{
-    normals.clear();
-    offsets.clear();
-    const auto* poly = isA<particleShapes::convexPolyhedron>(shape);
-    if (!poly)
-    {
-        return false;
-    }
-    const vectorField& n = poly->faceNormals();
-    const scalarField& o = poly->faceOffsets();
-    DynamicList<vector> nw;
-    DynamicList<scalar> ow;
-    forAll(n, f)
-    {
-        if (shape.planar() && !isSideFace(n[f]))
-        {
-            continue;
-        }
-        vector m = R & n[f];
-        if (shape.planar())
-        {
-            m.z() = 0;
-            m.normalise();
-        }
-        // n.(y - x) = o in the body frame: world offset o + n_w.x
-        nw.append(m);
-        ow.append(o[f] + (m & x));
-    }
-    normals.transfer(nw);
-    offsets.transfer(ow);
-    return true;
-}
-
-
 Foam::scalar Foam::particleGeometry::outsideDistanceBound
 (
     const particleShape& shape,
