@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "fictitiousDomain.H"
+#include "hexCellCheck.H"
 #include "particleGeometry.H"
 #include "Switch.H"
 #include "smallDenseSolve.H"
@@ -130,6 +131,9 @@ Foam::fictitiousDomain::fictitiousDomain
     results_(),
     commSeconds_(0)
 {
+    // Before anything is solved or written: a mesh the coupling is not
+    // validated on stops here, not by diverging later
+    hexCellCheck::require(mesh, "DLM/FD");
     if (!(surfaceSpacing_ > 0))
     {
         FatalIOErrorInFunction(dict)
