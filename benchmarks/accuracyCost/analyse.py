@@ -3,11 +3,14 @@ results.csv (called by `run --analyse`).
 
 Writes next to results.csv:
   accuracyCost.png    |error| against core-seconds per particle per D/U_ref,
-                      one panel per problem, one marker per sweep, the
-                      Pareto front (no run both cheaper and more accurate)
+                      one panel per problem, one marker per sweep, one
+                      colour per surface treatment (fluidStencil: before,
+                      ghostCells: after), the Pareto front of each (no run
+                      of that treatment both cheaper and more accurate)
   table.md            every run: settings, error, wall, core-seconds, memory
   recommendations.md  the cheapest measured run within 1, 3 and 10 % per
-                      problem, and the observed orders of convergence
+                      problem and treatment, and the observed orders of
+                      convergence
 """
 import csv
 import math
@@ -19,6 +22,7 @@ PROBLEMS = {
     "tenCateE2": "ten Cate E2: u_max against 0.05718 m/s",
     "tenCateE2bounce": "E2's bounce on the floor: rebound height against 80 sub-steps",
 }
+TREATMENTS = {"fluidStencil": "tab:blue", "ghostCells": "tab:red"}
 MARKERS = {"resolution": "o", "time step": "s", "tolerance": "^", "surface points": "D",
            "sub-steps": "v"}
 
@@ -26,6 +30,7 @@ MARKERS = {"resolution": "o", "time step": "s", "tolerance": "^", "surface point
 def load(path):
     rows = [r for r in csv.DictReader(open(path))]
     for r in rows:
+        r["treatment"] = r.get("treatment") or "fluidStencil"
         for k in ("resolution", "cfl", "tolerance", "spacing", "subSteps", "cells", "dt",
                   "time_units", "value", "reference", "error_percent", "wall_s", "core_s",
                   "peak_rss_MiB", "core_s_per_time_unit", "overlap_D", "granular_s",
@@ -44,9 +49,10 @@ def load(path):
     return rows
 
 
-def measured(rows, problem):
+def measured(rows, problem, treatment=None):
     return [r for r in rows if r["problem"] == problem and r["core_s"] is not None
-            and r["error_percent"] is not None]
+            and r["error_percent"] is not None
+            and (treatment is None or r["treatment"] == treatment)]
 
 
 def pareto(rs):
@@ -59,7 +65,9 @@ def pareto(rs):
 
 
 def settings(r):
-    return (f"D/dx {r['resolution']:g}, CFL {r['cfl']:g}, tol {r['tolerance']:g}, "
+    if r["treatment"] == "ghostCells":
+        return f"ghostCells, D/dx {r['resolution']:g}, CFL {r['cfl']:g}, sub-steps {r['subSteps']:g}"
+    return (f"fluidStencil, D/dx {r['resolution']:g}, CFL {r['cfl']:g}, tol {r['tolerance']:g}, "
             f"spacing {r['spacing']:g}, sub-steps {r['subSteps']:g}")
 
 
@@ -76,13 +84,13 @@ def order(points):
 
 def orders(rows):
     out = []
-    for p in ("fixedSphere", "terminalRe", "tenCateE2"):
-        rs = measured(rows, p)
+    for p, t in ((p, t) for p in ("fixedSphere", "terminalRe", "tenCateE2") for t in TREATMENTS):
+        rs = measured(rows, p, t)
         res = [r for r in rs if r["sweep"] == "resolution"]
         if len(res) >= 2:
             # Error against the reference, h = 1/N
             s = order([(1 / r["resolution"], r["error_percent"]) for r in res])
-            out.append((p, "space", s, len(res),
+            out.append((p, t, "space", s, len(res),
                         ", ".join(f"D/dx {r['resolution']:g}: {r['error_percent']:+.2f} %"
                                   for r in sorted(res, key=lambda r: r["resolution"]))))
         steps = [r for r in rs if r["sweep"] == "time step"]
@@ -97,7 +105,7 @@ def orders(rows):
             # Differences from the smallest step: the time error alone
             finest = ts[0]
             s = order([(r["cfl"], r["value"] - finest["value"]) for r in ts[1:]])
-            out.append((p, "time", s, len(ts),
+            out.append((p, t, "time", s, len(ts),
                         ", ".join(f"CFL {r['cfl']:g}: {r['error_percent']:+.2f} %" for r in ts)))
     return out
 
@@ -113,17 +121,20 @@ def plot(rows, png):
     probs = [p for p in PROBLEMS if measured(rows, p)]
     fig, axes = plt.subplots(1, len(probs), figsize=(4.2 * len(probs), 3.8), squeeze=False)
     for ax, p in zip(axes[0], probs):
-        rs = measured(rows, p)
-        for sweep, mk in MARKERS.items():
-            pts = [r for r in rs if r["sweep"] == sweep]
-            if pts:
-                ax.plot([r["core_s_per_time_unit"] for r in pts],
-                        [max(abs(r["error_percent"]), 1e-3) for r in pts], mk, mfc="none",
-                        label=sweep)
-        front = pareto(rs)
-        ax.plot([r["core_s_per_time_unit"] for r in front],
-                [max(abs(r["error_percent"]), 1e-3) for r in front], "k-", lw=0.8,
-                label="Pareto front")
+        for t, colour in TREATMENTS.items():
+            rs = measured(rows, p, t)
+            if not rs:
+                continue
+            for sweep, mk in MARKERS.items():
+                pts = [r for r in rs if r["sweep"] == sweep]
+                if pts:
+                    ax.plot([r["core_s_per_time_unit"] for r in pts],
+                            [max(abs(r["error_percent"]), 1e-3) for r in pts], mk, mfc="none",
+                            color=colour, label=f"{t}: {sweep}")
+            front = pareto(rs)
+            ax.plot([r["core_s_per_time_unit"] for r in front],
+                    [max(abs(r["error_percent"]), 1e-3) for r in front], "-", color=colour,
+                    lw=0.8, label=f"{t}: Pareto front")
         for lvl in (1, 3, 10):
             ax.axhline(lvl, color="0.8", lw=0.6, zorder=0)
         ax.set_xscale("log")
@@ -131,23 +142,24 @@ def plot(rows, png):
         ax.set_xlabel("core-seconds per particle per D/U_ref")
         ax.set_ylabel("|error| [%]")
         ax.set_title(PROBLEMS[p], fontsize=8)
-        ax.legend(fontsize=6)
+        ax.legend(fontsize=5)
     fig.tight_layout()
     fig.savefig(png, dpi=100)
 
 
 def table(rows, md):
     with open(md, "w") as f:
-        f.write("| problem | sweep | D/dx | CFL | tolerance | spacing | sub-steps | cells | value |"
+        f.write("| problem | treatment | sweep | D/dx | CFL | tolerance | spacing | sub-steps | cells | value |"
                 " error [%] | wall [s] | core-s | core-s per D/U_ref | peak RSS [MiB] |"
                 " granular [s] | note |\n")
-        f.write("|" + "---|" * 16 + "\n")
-        for r in sorted(rows, key=lambda r: (list(PROBLEMS).index(r["problem"]), r["sweep"],
+        f.write("|" + "---|" * 17 + "\n")
+        for r in sorted(rows, key=lambda r: (list(PROBLEMS).index(r["problem"]), r["treatment"],
+                                             r["sweep"],
                                              r["resolution"] or 0, r["cfl"] or 0,
                                              r["tolerance"] or 0, r["spacing"] or 0,
                                              r["subSteps"] or 0)):
             g = lambda k, fmt="{:g}": "" if r.get(k) is None else fmt.format(r[k])
-            f.write(f"| {r['problem']} | {r['sweep']} | {g('resolution')} | {g('cfl')} |"
+            f.write(f"| {r['problem']} | {r['treatment']} | {r['sweep']} | {g('resolution')} | {g('cfl')} |"
                     f" {g('tolerance')} | {g('spacing')} | {g('subSteps')} |"
                     f" {g('cells', '{:.0f}')} | {g('value', '{:.5g}')} |"
                     f" {g('error_percent', '{:+.2f}')} | {g('wall_s', '{:.0f}')} |"
@@ -160,8 +172,10 @@ def recommendations(rows, md):
     with open(md, "w") as f:
         f.write("| problem | target | cheapest measured run within it | error [%] |"
                 " core-s per particle per D/U_ref | peak RSS [MiB] |\n|---|---|---|---|---|---|\n")
-        for p in ("fixedSphere", "terminalRe", "tenCateE2"):
-            rs = measured(rows, p)
+        for p, t in ((p, t) for p in ("fixedSphere", "terminalRe", "tenCateE2") for t in TREATMENTS):
+            rs = measured(rows, p, t)
+            if not rs:
+                continue
             for lvl in (1, 3, 10):
                 ok = [r for r in rs if abs(r["error_percent"]) <= lvl]
                 if ok:
@@ -173,9 +187,10 @@ def recommendations(rows, md):
                     f.write(f"| {p} | {lvl} % | none measured (best "
                             f"{best['error_percent']:+.2f} % at {settings(best)}) | | | |\n"
                             if best else f"| {p} | {lvl} % | no run | | | |\n")
-        f.write("\n| problem | order in | observed order | runs | errors |\n|---|---|---|---|---|\n")
-        for p, kind, s, n, detail in orders(rows):
-            f.write(f"| {p} | {kind} | {'' if s is None else f'{s:.2f}'} | {n} | {detail} |\n")
+        f.write("\n| problem | treatment | order in | observed order | runs | errors |\n"
+                "|---|---|---|---|---|---|\n")
+        for p, t, kind, s, n, detail in orders(rows):
+            f.write(f"| {p} | {t} | {kind} | {'' if s is None else f'{s:.2f}'} | {n} | {detail} |\n")
 
 
 def main(path):
