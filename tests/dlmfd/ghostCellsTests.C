@@ -212,7 +212,7 @@ TEST(ghostCells, everySurfaceCellHasFluidToFitAtAnyResolution)
 
 TEST(ghostCells, fluidCellsAreNeverForcedNotEvenInATwoCellGap)
 {
-    // By default (ghostCutCells off) no fluid cell is forced at all, those
+    // By default (ghostCutCells none) no fluid cell is forced at all, those
     // of a two-cell gap between two cubes included; the cubes' own cells
     // take the whole force
     twoCubesInAGap g;
@@ -250,7 +250,7 @@ TEST(ghostCells, fluidCellsAreNeverForcedNotEvenInATwoCellGap)
 
 TEST(ghostCells, withCutCellsOnlyCutFluidCellsAreForcedEvenInATwoCellGap)
 {
-    // ghostCutCells on: the force density is zero in every cell more than
+    // ghostCutCells full: the force density is zero in every cell more than
     // half a cell out of both cubes (the cells their surfaces do not cut),
     // and the fluid there keeps its velocity; in the gap, one row of cells
     // lies 0.49 cells from a face (cut, forced) and the other 0.51 (free)
@@ -259,7 +259,7 @@ TEST(ghostCells, withCutCellsOnlyCutFluidCellsAreForcedEvenInATwoCellGap)
     const vectorField before(U.primitiveField());
     const scalar h = twoCubesInAGap::h;
     dictionary dict(ghostCells());
-    dict.add("ghostCutCells", true);
+    dict.add("ghostCutCells", word("full"));
     fictitiousDomain fd(g.mesh, dict);
     const List<fictitiousDomain::result>& res = fd.solve(U, g.bodies, 0.01);
     label free = 0, freeInGap = 0, cutInGap = 0;

@@ -30,6 +30,15 @@ Foam::fictitiousDomain::surfaceTreatmentNames
 });
 
 
+const Foam::Enum<Foam::fictitiousDomain::cutCellForcing>
+Foam::fictitiousDomain::cutCellForcingNames
+({
+    {cutCellForcing::none, "none"},
+    {cutCellForcing::full, "full"},
+    {cutCellForcing::solidFraction, "solidFraction"},
+});
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 Foam::scalar Foam::fictitiousDomain::reach() const
@@ -89,7 +98,13 @@ Foam::fictitiousDomain::fictitiousDomain
         )
     ),
     ghostFitRadius_(dict.getOrDefault<scalar>("ghostFitRadius", 2.5)),
-    forceCutCells_(dict.getOrDefault<Switch>("ghostCutCells", false)),
+    cutCells_
+    (
+        cutCellForcingNames.getOrDefault
+        (
+            "ghostCutCells", dict, cutCellForcing::none
+        )
+    ),
     surfacePoints_(dict.getOrDefault<Switch>("surfacePoints", true)),
     surfaceSpacing_(dict.getOrDefault<scalar>("surfacePointSpacing", 1)),
     stencilRadius_(dict.getOrDefault<scalar>("surfaceStencilRadius", 1.2)),

@@ -134,8 +134,8 @@ void Foam::fictitiousDomain::findGhostCandidates
                     fluidShift.append(si);
                     // A cell the surface cuts (its centre less than half a
                     // cell out) goes to the closest surface, which forces
-                    // it (ghostCutCells on)
-                    if (forceCutCells_ && bound < 0.5*h)
+                    // it (ghostCutCells full or solidFraction)
+                    if (cutCells_ != cutCellForcing::none && bound < 0.5*h)
                     {
                         claim(c, b, sqr(bound), false);
                     }
@@ -320,6 +320,7 @@ void Foam::fictitiousDomain::solveGhostBody
     List<tensor> P(nCut, tensor::I), Q(nCut);
     List<vector> E(nCut, Zero);
     boolList forced(nCut, false);
+    scalarList share(nCut, scalar(1));
     DynamicList<label> cells;
     DynamicList<scalar> alpha, beta;
     for (label j = 0; j < nCut; ++j)
@@ -334,6 +335,13 @@ void Foam::fictitiousDomain::solveGhostBody
             continue;
         }
         forced[j] = true;
+        // The share of the cell inside the body: all of it (full), or
+        // 1/2 - s/h_n, h_n the width of an axis-aligned cell along n
+        if (cutCells_ == cutCellForcing::solidFraction)
+        {
+            const scalar hn = h*(mag(n.x()) + mag(n.y()) + mag(n.z()));
+            share[j] = min(max(0.5 - sj/hn, scalar(0)), scalar(1));
+        }
         const tensor nn(n*n), tt(tensor::I - nn);
         scalar sa = 0, sb = 0;
         vector ua(Zero), ub(Zero), ra(Zero), rb(Zero);
@@ -353,7 +361,7 @@ void Foam::fictitiousDomain::solveGhostBody
         E[j] = sj*(tt & ua) + sqr(sj)*(nn & ub);
         P[j] = tensor::I - A;
         Q[j] += sj*(tt & cross(ra)) + sqr(sj)*(nn & cross(rb));
-        const scalar V = vCut[j];
+        const scalar V = share[j]*vCut[j];
         KVV += V*P[j];
         KVO += V*Q[j];
         KOV += V*(cross(rj) & P[j]);
@@ -543,7 +551,7 @@ void Foam::fictitiousDomain::solveGhostBody
             {
                 uNew.z() = uCut[j].z();
             }
-            f[i] = (uNew - uCut[j])/dt;
+            f[i] = share[j]*(uNew - uCut[j])/dt;
             const vector lambda = vCut[j]*f[i];
             res.sumLambda += lambda;
             res.sumMoment += (xCut[j] - X) ^ lambda;
