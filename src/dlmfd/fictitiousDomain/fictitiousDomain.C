@@ -36,6 +36,7 @@ Foam::fictitiousDomain::cutCellForcingNames
     {cutCellForcing::none, "none"},
     {cutCellForcing::full, "full"},
     {cutCellForcing::solidFraction, "solidFraction"},
+    {cutCellForcing::solidFractionBothSides, "solidFractionBothSides"},
 });
 
 

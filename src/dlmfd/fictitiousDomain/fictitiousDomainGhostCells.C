@@ -337,7 +337,11 @@ void Foam::fictitiousDomain::solveGhostBody
         forced[j] = true;
         // The share of the cell inside the body: all of it (full), or
         // 1/2 - s/h_n, h_n the width of an axis-aligned cell along n
-        if (cutCells_ == cutCellForcing::solidFraction)
+        if
+        (
+            cutCells_ == cutCellForcing::solidFraction
+         || cutCells_ == cutCellForcing::solidFractionBothSides
+        )
         {
             const scalar hn = h*(mag(n.x()) + mag(n.y()) + mag(n.z()));
             share[j] = min(max(0.5 - sj/hn, scalar(0)), scalar(1));
@@ -458,11 +462,19 @@ void Foam::fictitiousDomain::solveGhostBody
     dev = Zero;
     label nGhost = 0, nAlone = 0;
     const scalar link2 = sqr(1.1*h);
+    // The share of each body cell inside the body: 1, or 1/2 + d/h_n with
+    // the cut cells' solid fraction on both sides of the surface
+    scalarList shareIn(nIn, scalar(1));
     for (label c = 0; c < nIn; ++c)
     {
         point p;
         vector n;
         const scalar d = particleGeometry::depth(*B.shape, X, B.R, xIn[c], p, n);
+        if (cutCells_ == cutCellForcing::solidFractionBothSides)
+        {
+            const scalar hn = h*(mag(n.x()) + mag(n.y()) + mag(n.z()));
+            shareIn[c] = min(0.5 + d/hn, scalar(1));
+        }
         const scalar fade = fadeOf(d);
         if (fade <= 0)
         {
@@ -526,13 +538,28 @@ void Foam::fictitiousDomain::solveGhostBody
             const label c = order[i];
             const vector r = xIn[c] - X;
             const vector rigid = rigidAt(xIn[c]);
+            // A cell partly outside the body keeps that part of its
+            // velocity; what it keeps counts as its deviation, so that the
+            // body's balance above holds whatever the share
             vector uNew = rigid + dev[c];
+            if (shareIn[c] < 1)
+            {
+                uNew = uIn[c] + shareIn[c]*(uNew - uIn[c]);
+            }
             if (twoD_)
             {
                 uNew.z() = uIn[c].z();
             }
             f[i] = (uNew - uIn[c])/dt;
             devOut[i] = dev[c];
+            if (shareIn[c] < 1)
+            {
+                devOut[i] = uNew - rigid;
+                if (twoD_)
+                {
+                    devOut[i].z() = dev[c].z();
+                }
+            }
             const vector lambda = vIn[c]*(rigid - (uIn[c] - devIn[c]))/dt;
             res.sumLambda += lambda;
             res.sumMoment += r ^ lambda;
