@@ -297,6 +297,83 @@ TEST(ghostCells, withCutCellsOnlyCutFluidCellsAreForcedEvenInATwoCellGap)
 }
 
 
+TEST(ghostCells, cutCellsAreForcedInProportionToTheirPartInsideTheBody)
+{
+    // A fixed cube of edge 0.3 (h = 1/24) whose +x face lies 0.3 cell
+    // beyond a row of cell centres (a body cell d = 0.3 h in) and whose -x
+    // face 0.1 cell short of one (a fluid cell s = 0.1 h out). With
+    // ghostCutCells solidFractionBothSides the force density in every cell
+    // is that of ghostCutCells full times the part of the cell inside the
+    // body, 1/2 + d/h_n between 0 and 1: under the middle of those faces
+    // 0.8 and 0.4, in the cells deeper than half a cell 1
+    test::foamTestCase tc;
+    const scalar h = 1.0/24, edge = 0.3;
+    const fvMesh& mesh = tc.makeBoxMesh(24, 24, 24, vector::one);
+    tmp<volVectorField> tU = zeroU(mesh);
+    using constant::mathematical::twoPi;
+    forAll(tU(), c)
+    {
+        const point& x = mesh.C()[c];
+        tU.ref()[c] = vector
+        (
+            0.1*std::sin(twoPi*x.y()), 0.05*std::cos(twoPi*x.z()) + 0.03,
+            0.08*std::sin(twoPi*x.x())
+        );
+    }
+    particleShapes::platonicSolid cube("cube", "cube", edge);
+    List<fictitiousDomain::body> bodies(1);
+    bodies[0].shape = &cube;
+    bodies[0].excessDensity = 1;
+    bodies[0].free = false;
+    bodies[0].centre = point(0.5 + 0.2*h, 0.5, 0.5);
+
+    const auto sourceWith = [&](const word& cut)
+    {
+        volVectorField U("U", tU());
+        dictionary dict(ghostCells());
+        dict.add("ghostCutCells", cut);
+        fictitiousDomain fd(mesh, dict);
+        fd.solve(U, bodies, 0.01);
+        return vectorField(fd.source().primitiveField());
+    };
+    const vectorField full(sourceWith("full"));
+    const vectorField share(sourceWith("solidFractionBothSides"));
+
+    // The part inside, 1/2 + d/h_n (d < 0 outside, h_n the cell's width
+    // along the normal at the nearest surface point), between 0 and 1
+    label nIn = 0, nOut = 0, nForced = 0;
+    forAll(full, c)
+    {
+        const point& x = mesh.C()[c];
+        point p;
+        vector n;
+        const scalar d =
+            particleGeometry::depth(cube, bodies[0].centre, bodies[0].R, x, p, n);
+        const scalar hn = h*(mag(n.x()) + mag(n.y()) + mag(n.z()));
+        const scalar expected = min(max(0.5 + d/hn, scalar(0)), scalar(1));
+        const bool middle =
+            mag(x.y() - 0.5) < 0.1 && mag(x.z() - 0.5) < 0.1;
+        if (middle && mag(x.x() - (0.5 + 0.2*h + edge/2 - 0.3*h)) < 1e-9)
+        {
+            EXPECT_NEAR(expected, 0.8, 1e-9) << str(x);
+            ++nIn;
+        }
+        if (middle && mag(x.x() - (0.5 + 0.2*h - edge/2 - 0.1*h)) < 1e-9)
+        {
+            EXPECT_NEAR(expected, 0.4, 1e-9) << str(x);
+            ++nOut;
+        }
+        nForced += mag(full[c]) > 0;
+        EXPECT_LT(mag(share[c] - expected*full[c]), 1e-9*(1 + mag(full[c])))
+            << str(x) << " expected " << expected << " of " << str(full[c])
+            << ", got " << str(share[c]);
+    }
+    EXPECT_GT(nIn, 10);
+    EXPECT_GT(nOut, 10);
+    EXPECT_GT(nForced, 500);
+}
+
+
 TEST(ghostCells, badSettingsAreRefusedNamingTheValidOnes)
 {
     // A misspelt treatment lists the valid names; a fit narrower than one
