@@ -210,15 +210,16 @@ TEST(ghostCells, everySurfaceCellHasFluidToFitAtAnyResolution)
 }
 
 
-TEST(ghostCells, fluidCellsAreNeverForcedNotEvenInATwoCellGap)
+TEST(ghostCells, withoutCutCellForcingNoFluidCellIsForcedNotEvenInATwoCellGap)
 {
-    // By default (ghostCutCells none) no fluid cell is forced at all, those
-    // of a two-cell gap between two cubes included; the cubes' own cells
-    // take the whole force
+    // With ghostCutCells none no fluid cell is forced at all, those of a
+    // two-cell gap between two cubes included; the cubes' own cells take
+    // the whole force
     twoCubesInAGap g;
     volVectorField& U = g.tU.ref();
     const vectorField before(U.primitiveField());
     dictionary dict(ghostCells());
+    dict.add("ghostCutCells", word("none"));
     fictitiousDomain fd(g.mesh, dict);
     const List<fictitiousDomain::result>& res = fd.solve(U, g.bodies, 0.01);
     label outside = 0, inGap = 0;
@@ -250,49 +251,54 @@ TEST(ghostCells, fluidCellsAreNeverForcedNotEvenInATwoCellGap)
 
 TEST(ghostCells, withCutCellsOnlyCutFluidCellsAreForcedEvenInATwoCellGap)
 {
-    // ghostCutCells full: the force density is zero in every cell more than
-    // half a cell out of both cubes (the cells their surfaces do not cut),
-    // and the fluid there keeps its velocity; in the gap, one row of cells
-    // lies 0.49 cells from a face (cut, forced) and the other 0.51 (free)
-    twoCubesInAGap g;
-    volVectorField& U = g.tU.ref();
-    const vectorField before(U.primitiveField());
-    const scalar h = twoCubesInAGap::h;
-    dictionary dict(ghostCells());
-    dict.add("ghostCutCells", word("full"));
-    fictitiousDomain fd(g.mesh, dict);
-    const List<fictitiousDomain::result>& res = fd.solve(U, g.bodies, 0.01);
-    label free = 0, freeInGap = 0, cutInGap = 0;
-    forAll(U, c)
+    // ghostCutCells full and solidFractionBothSides (the default): the
+    // force density is zero in every cell more than half a cell out of both
+    // cubes (the cells their surfaces do not cut), and the fluid there keeps
+    // its velocity; in the gap, one row of cells lies 0.49 cells from a face
+    // (cut, forced) and the other 0.51 (free)
+    for (const word cut : {"full", "solidFractionBothSides"})
     {
-        const point& x = g.mesh.C()[c];
-        scalar out = GREAT;
-        for (const auto& b : g.bodies)
+        SCOPED_TRACE(cut);
+        twoCubesInAGap g;
+        volVectorField& U = g.tU.ref();
+        const vectorField before(U.primitiveField());
+        const scalar h = twoCubesInAGap::h;
+        dictionary dict(ghostCells());
+        dict.add("ghostCutCells", cut);
+        fictitiousDomain fd(g.mesh, dict);
+        const List<fictitiousDomain::result>& res = fd.solve(U, g.bodies, 0.01);
+        label free = 0, freeInGap = 0, cutInGap = 0;
+        forAll(U, c)
         {
-            out = min
-            (
-                out,
-                particleGeometry::outsideDistanceBound(g.cube, b.centre, b.R, x)
-            );
+            const point& x = g.mesh.C()[c];
+            scalar out = GREAT;
+            for (const auto& b : g.bodies)
+            {
+                out = min
+                (
+                    out,
+                    particleGeometry::outsideDistanceBound(g.cube, b.centre, b.R, x)
+                );
+            }
+            const bool inGap = twoCubesInAGap::inGap(x, h);
+            if (out < 0.5*h)
+            {
+                cutInGap += inGap && out > 0 && mag(fd.source()[c]) > 0;
+                continue;
+            }
+            ++free;
+            freeInGap += inGap;
+            EXPECT_EQ(mag(fd.source()[c]), 0) << str(x);
+            EXPECT_EQ(mag(U[c] - before[c]), 0) << str(x);
         }
-        const bool inGap = twoCubesInAGap::inGap(x, h);
-        if (out < 0.5*h)
+        EXPECT_GT(freeInGap, 20);
+        EXPECT_GT(cutInGap, 20);
+        EXPECT_GT(free, 10000);
+        for (const auto& r : res)
         {
-            cutInGap += inGap && out > 0 && mag(fd.source()[c]) > 0;
-            continue;
+            EXPECT_GT(mag(r.sumLambda), 0);
+            EXPECT_EQ(r.nSurfaceDropped, 0);
         }
-        ++free;
-        freeInGap += inGap;
-        EXPECT_EQ(mag(fd.source()[c]), 0) << str(x);
-        EXPECT_EQ(mag(U[c] - before[c]), 0) << str(x);
-    }
-    EXPECT_GT(freeInGap, 20);
-    EXPECT_GT(cutInGap, 20);
-    EXPECT_GT(free, 10000);
-    for (const auto& r : res)
-    {
-        EXPECT_GT(mag(r.sumLambda), 0);
-        EXPECT_EQ(r.nSurfaceDropped, 0);
     }
 }
 

@@ -103,7 +103,7 @@ Foam::fictitiousDomain::fictitiousDomain
     (
         cutCellForcingNames.getOrDefault
         (
-            "ghostCutCells", dict, cutCellForcing::none
+            "ghostCutCells", dict, cutCellForcing::solidFractionBothSides
         )
     ),
     surfacePoints_(dict.getOrDefault<Switch>("surfacePoints", true)),
