@@ -251,7 +251,7 @@ TEST(ghostCells, withoutCutCellForcingNoFluidCellIsForcedNotEvenInATwoCellGap)
 
 TEST(ghostCells, withCutCellsOnlyCutFluidCellsAreForcedEvenInATwoCellGap)
 {
-    // ghostCutCells full and solidFractionBothSides (the default): the
+    // ghostCutCells full and solidFractionBothSides: the
     // force density is zero in every cell more than half a cell out of both
     // cubes (the cells their surfaces do not cut), and the fluid there keeps
     // its velocity; in the gap, one row of cells lies 0.49 cells from a face

@@ -103,7 +103,7 @@ Foam::fictitiousDomain::fictitiousDomain
     (
         cutCellForcingNames.getOrDefault
         (
-            "ghostCutCells", dict, cutCellForcing::solidFractionBothSides
+            "ghostCutCells", dict, cutCellForcing::none
         )
     ),
     surfacePoints_(dict.getOrDefault<Switch>("surfacePoints", true)),

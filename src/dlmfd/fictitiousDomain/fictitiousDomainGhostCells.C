@@ -38,15 +38,19 @@ Description
     fluid cell in reach (two bodies in contact) moves rigidly.
 
     The cells the surface cuts (centres within half a cell of it): with
-    ghostCutCells solidFractionBothSides (the default) each is forced by
+    ghostCutCells solidFractionBothSides each is forced by
     the part of it inside the body, 1/2 + d/h_n (d the centre's depth,
     negative outside; h_n the cell's width along n): a fluid cell s = -d
     out takes that share of the fitted profile u_r + s a_t + b s^2 n, a
     body cell keeps the rest of its velocity (counted in its deviation, so
-    the body's balance below does not change). Without it (none) the
-    blockage of the body is that of the cells whose centres lie inside: a
-    cube whose faces stand 0.4 cell beyond a row of centres acted 0.8 cell
-    thinner, with 22 % too little drag at D/dx 6 (benchmarks/fixedBodyDrag).
+    the body's balance below does not change). Without it (none, the
+    default) the blockage of the body is that of the cells whose centres
+    lie inside: a cube whose faces stand 0.4 cell beyond a row of centres
+    acted 0.8 cell thinner, with 22 % too little drag at D/dx 6
+    (benchmarks/fixedBodyDrag). It is not the default because free bodies
+    settle slower with it (doc/dictionaries.md): a cell crossing the
+    surface then carries a deviation of about half the fluid's relative
+    velocity, which the body pays as it leaves (suspected, not shown).
 
     The fluid's cells get the force density f_c = (u_c - \hat u_c)/dt;
     the body takes the momentum that brings its cells from \hat u_c, less
