@@ -101,14 +101,6 @@ bool Foam::hexCellCheck::isHexLike
         why = os.str();
         return false;
     }
-    if (c.size() < 6)
-    {
-        OStringStream os;
-        os  << "cell " << celli << " at " << mesh.cellCentres()[celli]
-            << " has " << c.size() << " faces, where a hexahedron has 6";
-        why = os.str();
-        return false;
-    }
     return true;
 }
 
