@@ -139,6 +139,16 @@ int main(int argc, char *argv[])
             }
 
             laminarTransport.correct();
+
+            // With more than one outer corrector the constraint is imposed
+            // after each but the last too: the next fluid step carries its
+            // force (the last is imposed by evolve below)
+            if (particles.valid() && !pimple.finalIter())
+            {
+                fluidSeconds += clock.timeIncrement();
+                particles->correct(U);
+                clock.timeIncrement();
+            }
         }
 
         fluidSeconds += clock.timeIncrement();

@@ -144,6 +144,10 @@ Foam::fictitiousDomain::fictitiousDomain
         mesh,
         dimensionedScalar("none", dimless, -1)
     ),
+    stepStartSource_(),
+    stepStartDeviation_(),
+    stepStartOwner_(),
+    stepStartIndex_(-1),
     results_(),
     commSeconds_(0)
 {
@@ -218,6 +222,37 @@ void Foam::fictitiousDomain::discardStoredState(const fileName& particleFile)
     source_ == dimensionedVector(source_.dimensions(), Zero);
     deviation_ == dimensionedVector(deviation_.dimensions(), Zero);
     ghostOwner_ == dimensionedScalar("none", dimless, -1);
+}
+
+
+void Foam::fictitiousDomain::keepStepStart()
+{
+    stepStartIndex_ = mesh_.time().timeIndex();
+    stepStartSource_ = source_.primitiveField();
+    if (treatment_ == surfaceTreatment::ghostCells)
+    {
+        stepStartDeviation_ = deviation_.primitiveField();
+        stepStartOwner_ = ghostOwner_.primitiveField();
+    }
+}
+
+
+void Foam::fictitiousDomain::rewindToStepStart()
+{
+    if (stepStartIndex_ != mesh_.time().timeIndex())
+    {
+        FatalErrorInFunction
+            << "no state kept for time index " << mesh_.time().timeIndex()
+            << ": keepStepStart() must come first in the step"
+            << exit(FatalError);
+    }
+    if (treatment_ == surfaceTreatment::ghostCells)
+    {
+        deviation_.primitiveFieldRef() = stepStartDeviation_;
+        ghostOwner_.primitiveFieldRef() = stepStartOwner_;
+        deviation_.correctBoundaryConditions();
+        ghostOwner_.correctBoundaryConditions();
+    }
 }
 
 

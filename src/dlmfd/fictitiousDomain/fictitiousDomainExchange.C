@@ -17,6 +17,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "fictitiousDomain.H"
+#include "fvmDdt.H"
 #include "particleGeometry.H"
 #include "smallDenseSolve.H"
 #include "fictitiousDomainParts.H"
@@ -230,16 +231,37 @@ Foam::fictitiousDomain::solve
 (
     volVectorField& U,
     const UList<body>& bodies,
-    const scalar dt
+    const scalar dt,
+    const bool outerCorrector
 )
 {
     const label nProcs = Pstream::nProcs();
     const label me = Pstream::myProcNo();
     const auto solverOf = [&](const label b) { return b % nProcs; };
 
-    // The fluid without the previous multipliers' force
+    // The fluid without the previous multipliers' force: within the outer
+    // loop, without S^n and without the share of G - S^n the time scheme
+    // gave it (the fluid step's ddt diagonal a/dt), so that the fluid's
+    // momentum lost is the bodies' gain however G was chosen
+    const bool inOuterLoop = stepStartIndex_ == mesh_.time().timeIndex();
+    if (outerCorrector && !inOuterLoop)
+    {
+        FatalErrorInFunction
+            << "an outer corrector's solve needs keepStepStart() first in"
+            << " the step" << exit(FatalError);
+    }
     vectorField& u = U.primitiveFieldRef();
-    u -= dt*source_.primitiveField();
+    scalarField a;
+    if (inOuterLoop)
+    {
+        a = dt*fvm::ddt(U)().A()().primitiveField();
+        const vectorField& G = source_.primitiveField();
+        u -= dt*stepStartSource_ + (dt/a)*(G - stepStartSource_);
+    }
+    else
+    {
+        u -= dt*source_.primitiveField();
+    }
     source_.primitiveFieldRef() = Zero;
 
 
@@ -427,6 +449,14 @@ Foam::fictitiousDomain::solve
                 }
             }
         }
+    }
+
+    if (outerCorrector)
+    {
+        // The next corrector's force: what makes its fluid step reach
+        // this solve's velocities, u* + (dt/a) (G' - G) = u
+        vectorField& G = source_.primitiveFieldRef();
+        G = stepStartSource_ + a*(G - stepStartSource_);
     }
 
     {
