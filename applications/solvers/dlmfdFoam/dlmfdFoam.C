@@ -42,7 +42,7 @@ Usage
         File                           | Contents
         constant/transportProperties   | transportModel and its coefficients
         constant/flowControlProperties | meanFlowControl model, see Foam::meanFlowControl
-        system/fvSolution PIMPLE       | nOuterCorrectors, nCorrectors, ...
+        system/fvSolution PIMPLE       | nOuterCorrectors (the particles' constraint after each), nCorrectors, ...
         constant/fvOptions (optional)  | extra sources and constraints
         constant/sceneProperties (optional) | effects, Foam::sceneEffects
     \endtable

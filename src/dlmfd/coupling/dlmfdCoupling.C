@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "dlmfdCoupling.H"
+#include "knownKeywords.H"
 #include "OStringStream.H"
 #include "problemList.H"
 #include "granularInput.H"
@@ -311,6 +312,24 @@ Foam::dlmfdCoupling::dlmfdCoupling
     nCorrections_(0),
     lastV_()
 {
+    // A misspelt optional keyword would leave its default in force (the
+    // file of the case's constant/ folder: in parallel the dictionary is
+    // the master's reading, with no file name)
+    const fileName propertiesFile
+    (
+        mesh.time().globalPath()/mesh.time().constant()/"dlmfdProperties"
+    );
+    knownKeywords::require
+    (
+        properties_, wordList({"fluidDensity", "fictitiousDomain"}),
+        word::null, propertiesFile
+    );
+    knownKeywords::require
+    (
+        properties_, fictitiousDomain::keywords(), "fictitiousDomain",
+        propertiesFile
+    );
+
     // Walls from the mesh's planar patches, where asked for
     granular_.addWallPatches(mesh);
 

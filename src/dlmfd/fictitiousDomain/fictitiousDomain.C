@@ -206,6 +206,17 @@ Foam::fictitiousDomain::fictitiousDomain
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::wordList Foam::fictitiousDomain::keywords()
+{
+    return wordList
+    ({
+        "surfaceTreatment", "ghostFitRadius", "ghostCutCells",
+        "surfacePoints", "surfacePointSpacing", "surfaceStencilRadius",
+        "surfacePointRetraction", "tolerance", "maxIterations"
+    });
+}
+
+
 void Foam::fictitiousDomain::discardStoredState(const fileName& particleFile)
 {
     const bool stored =

@@ -22,12 +22,24 @@ Description
 #include "uniformDimensionedFields.H"
 #include "objectRegistry.H"
 
+#include "knownKeywords.H"
 #include <algorithm>
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::granularSystem::readCollision(const dictionary& collisionDict)
 {
+    // A misspelt optional keyword would leave its default in force
+    knownKeywords::require
+    (
+        collisionDict,
+        wordList
+        ({
+            "contactLaw", "subStepsPerContact", "overlapLimit", "skin",
+            "domain", "walls", "wallPatches", "pairs"
+        })
+    );
+
     subStepsPerContact_ =
         collisionDict.getOrDefault<label>("subStepsPerContact", 20);
     if (subStepsPerContact_ < 1)
