@@ -10,7 +10,9 @@ License
     option) any later version. See <http://www.gnu.org/licenses/>.
 
 Description
-    Particle state files: <time>/particles.
+    Input of the granular system: constant/collisionProperties (contact
+    settings, domain, walls, laws) and the particle state files,
+    <time>/particles:
 
     \verbatim
     particles
@@ -41,6 +43,8 @@ Description
 #include "OSspecific.H"
 #include "Map.H"
 #include "OStringStream.H"
+#include "knownKeywords.H"
+#include "granularInput.H"
 #include "uniformDimensionedFields.H"
 #include "objectRegistry.H"
 #include "Time.H"
@@ -58,6 +62,176 @@ namespace
         vector v;
         is >> v;
         return v;
+    }
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::granularSystem::readCollision(const dictionary& collisionDict)
+{
+    // A misspelt optional keyword would leave its default in force
+    knownKeywords::require
+    (
+        collisionDict,
+        wordList
+        ({
+            "contactLaw", "subStepsPerContact", "overlapLimit", "skin",
+            "domain", "walls", "wallPatches", "pairs"
+        })
+    );
+
+    subStepsPerContact_ =
+        collisionDict.getOrDefault<label>("subStepsPerContact", 20);
+    if (subStepsPerContact_ < 1)
+    {
+        FatalIOErrorInFunction(collisionDict)
+            << "subStepsPerContact = " << subStepsPerContact_
+            << " is not allowed; it must be >= 1 (seed 001 uses 20)"
+            << exit(FatalIOError);
+    }
+
+    overlapLimit_ = collisionDict.getOrDefault<scalar>("overlapLimit", 0.05);
+    if (!(overlapLimit_ > 0 && overlapLimit_ < 1))
+    {
+        FatalIOErrorInFunction(collisionDict)
+            << "overlapLimit = " << overlapLimit_ << " is not allowed;"
+            << " 0 < overlapLimit < 1 (largest overlap over the smaller"
+            << " equivalent diameter; the laws' own design overlaps are"
+            << " 0.001-0.01)" << exit(FatalIOError);
+    }
+
+    skin_ = -1;
+    if (collisionDict.readIfPresent("skin", skin_) && !(skin_ >= 0))
+    {
+        FatalIOErrorInFunction(collisionDict)
+            << "skin = " << skin_ << " is not allowed; it must be >= 0 [m]"
+            << exit(FatalIOError);
+    }
+
+    const dictionary& domainDict = collisionDict.subDict("domain");
+    const point lo = domainDict.get<point>("min");
+    const point hi = domainDict.get<point>("max");
+    for (direction d = 0; d < 3; ++d)
+    {
+        if (!(hi[d] > lo[d]))
+        {
+            FatalIOErrorInFunction(domainDict)
+                << "domain: max " << hi << " must exceed min " << lo
+                << " in every direction" << exit(FatalIOError);
+        }
+    }
+    domain_ = boundBox(lo, hi);
+    periodic_ = domainDict.getOrDefault<FixedList<bool, 3>>
+    (
+        "periodic", FixedList<bool, 3>(false)
+    );
+    anyPeriodic_ = periodic_[0] || periodic_[1] || periodic_[2];
+
+    if (const dictionary* wallsDict = collisionDict.findDict("walls"))
+    {
+        for (const word& name : wallsDict->toc())
+        {
+            walls_.append(planeWall::read(name, wallsDict->subDict(name)));
+            wallMaterial_.append
+            (
+                materials_.addWallMaterial(walls_.last().material)
+            );
+        }
+    }
+
+    // Periodicity: the domain's directions; a declaration must agree
+    const string domainName = domainDict.name();
+    if
+    (
+        effects_.settle("periodicity", anyPeriodic_, domainName + " periodic")
+     != anyPeriodic_
+    )
+    {
+        effects_.contradiction
+        (
+            "periodicity",
+            "the domain of " + domainName + " has periodic "
+          + (anyPeriodic_ ? "directions " : "none ")
+          + "(periodic (" + Switch::name(periodic_[0]) + ' '
+          + Switch::name(periodic_[1]) + ' ' + Switch::name(periodic_[2])
+          + "))"
+        );
+    }
+
+    // Collisions: off builds no law at all
+    const word lawName = collisionDict.get<word>("contactLaw");
+    collisionMode_ = effects_.settleCollisions
+    (
+        lawName == "none"
+      ? sceneEffects::collisionMode::off
+      : sceneEffects::collisionMode::on,
+        "contactLaw " + lawName
+    );
+    contactsOn_ = collisionMode_ != sceneEffects::collisionMode::off;
+    if (contactsOn_ && lawName == "none")
+    {
+        effects_.contradiction
+        (
+            "collisions",
+            collisionDict.name() + " has contactLaw none; name a law"
+            " (hookeanSpringDashpot, hookeanStaticFriction) and its pairs"
+        );
+    }
+    // Friction is settled before the laws are built: they are built with it
+    if (contactsOn_)
+    {
+        effects_.settle("friction", true, "default");
+    }
+    buildLaws();
+
+    if (!contactsOn_)
+    {
+        effects_.settle("friction", false, "collisions off");
+        effects_.settle("frictionHistory", false, "collisions off");
+        if (effects_.declared("friction") && effects_.on("friction"))
+        {
+            effects_.contradiction("friction", "collisions are off");
+        }
+        if
+        (
+            effects_.declared("frictionHistory")
+         && effects_.on("frictionHistory")
+        )
+        {
+            effects_.contradiction("frictionHistory", "collisions are off");
+        }
+        return;
+    }
+
+    const bool history = laws_->needsHistory();
+    const bool friction = effects_.on("friction");
+    if
+    (
+        effects_.settle("frictionHistory", history, "contactLaw " + lawName)
+     != history
+    )
+    {
+        effects_.contradiction
+        (
+            "frictionHistory",
+            "contactLaw " + lawName + " of " + collisionDict.name()
+          + (
+                history
+              ? " keeps a tangential history; declare it on, or use"
+                " hookeanSpringDashpot"
+              : " keeps none; use hookeanStaticFriction"
+            )
+        );
+    }
+    if (history && !friction)
+    {
+        effects_.contradiction
+        (
+            "friction",
+            "contactLaw " + lawName + " is a friction law with history;"
+            " without friction use hookeanSpringDashpot"
+        );
     }
 }
 

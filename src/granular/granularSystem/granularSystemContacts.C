@@ -1,0 +1,253 @@
+/*---------------------------------------------------------------------------*\
+  dlmfdFoam: DLM/FD particle-resolved simulation of particulate flows
+-------------------------------------------------------------------------------
+License
+    This file is part of dlmfdFoam, an extension of OpenFOAM.
+
+    dlmfdFoam is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by the
+    Free Software Foundation, either version 3 of the License, or (at your
+    option) any later version. See <http://www.gnu.org/licenses/>.
+
+Description
+    Contact forces of the granular system: the candidate pairs of the
+    broad phase, the force of one contact, and the wall and pair forces of
+    a sub-step with their tangential histories.
+
+\*---------------------------------------------------------------------------*/
+
+#include "granularSystem.H"
+#include "narrowPhase.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::granularSystem::updateCandidates()
+{
+    if (!rebuildList_ && xAtBuild_.size() == size())
+    {
+        return;
+    }
+    rebuildList_ = false;
+
+    xAtBuild_.setSize(size());
+    for (label i = 0; i < size(); ++i)
+    {
+        xAtBuild_[i] = particles_[i].position();
+    }
+    // In (i, j) order: the forces are summed in the same order whenever
+    // the list was built, so that a restart continues bitwise
+    cells_->findPairs(xAtBuild_, radius_, skin_, candidates_);
+
+    // A particle moves by at most skin/2 relative to a wall before the
+    // next build; a whole skin is kept, as for the pairs
+    nearWallStart_.setSize(size() + 1);
+    DynamicList<label> near(nearWalls_.size());
+    for (label i = 0; i < size(); ++i)
+    {
+        nearWallStart_[i] = near.size();
+        if (particles_[i].motion() != rigidParticle::motionKind::free)
+        {
+            continue;
+        }
+        forAll(walls_, w)
+        {
+            if (walls_[w].distance(xAtBuild_[i]) <= radius_[i] + skin_)
+            {
+                near.append(w);
+            }
+        }
+    }
+    nearWallStart_[size()] = near.size();
+    nearWalls_.transfer(near);
+
+    ++stats_.nListBuilds;
+}
+
+
+Foam::vector Foam::granularSystem::contactForce
+(
+    const contactLaw& law,
+    const contactGeometry& c,
+    const vector& Urel,
+    const scalar M,
+    const scalar dt,
+    const std::uint64_t key
+)
+{
+    if (!law.needsHistory())
+    {
+        vector unused(Zero);
+        return law.force(c.overlap, c.normal, Urel, M, dt, unused);
+    }
+
+    vector h(Zero);
+    const auto iter = history_.find(key);
+    if (iter != history_.end())
+    {
+        h = iter->second;
+    }
+    const vector F = law.force(c.overlap, c.normal, Urel, M, dt, h);
+    historyNew_[key] = h;
+    return F;
+}
+
+
+void Foam::granularSystem::addWallForces(const label i, const scalar dt)
+{
+    rigidParticle& pi = particles_[i];
+    if (pi.motion() != rigidParticle::motionKind::free)
+    {
+        return;
+    }
+    contactGeometry c;
+    for (label k = nearWallStart_[i]; k < nearWallStart_[i + 1]; ++k)
+    {
+        const label w = nearWalls_[k];
+        if (!wallTouches(i, w, c))
+        {
+            continue;
+        }
+        vector Ui, omegai;
+        pi.predictedVelocities(dt, Ui, omegai);
+        const vector Urel = Ui + (omegai ^ (c.position - pi.position()));
+        const contactLaw& law = laws_->law(materialOf_[i], wallMaterial_[w]);
+        const vector F =
+            contactForce(law, c, Urel, pi.mass(), dt, wallKey(i, w));
+        pi.addForceAt(F, c.position);
+        if (c.spread > 0)
+        {
+            pi.addTorque
+            (
+                law.regionTorque
+                (
+                    c.normal, omegai, c.spread, pi.mass(), F & c.normal
+                )
+            );
+        }
+
+        ++stats_.nWallContacts;
+        noteOverlap(i, -1 - w, c.overlap/Deq_[i]);
+    }
+}
+
+
+void Foam::granularSystem::addPairForces(const scalar dt)
+{
+    using motionKind = rigidParticle::motionKind;
+
+    stats_.nCandidatePairs = candidates_.size();
+
+    contactGeometry c;
+
+    for (const labelPair& ij : candidates_)
+    {
+        const label i = ij.first(), j = ij.second();
+        rigidParticle& pi = particles_[i];
+        rigidParticle& pj = particles_[j];
+        const bool iMoves = pi.motion() == motionKind::free;
+        const bool jMoves = pj.motion() == motionKind::free;
+        // A fixed particle carries no force (it is in no sub-step pass)
+        const bool iHeld = pi.motion() == motionKind::fixed;
+        const bool jHeld = pj.motion() == motionKind::fixed;
+        if (!iMoves && !jMoves)
+        {
+            continue;
+        }
+
+        point xjImage;
+        if (!pairTouches(i, j, c, xjImage))
+        {
+            continue;
+        }
+        const vector shift = xjImage - pj.position();
+
+        const scalar M =
+            !iMoves ? pj.mass()
+          : !jMoves ? pi.mass()
+          : pi.mass()*pj.mass()/(pi.mass() + pj.mass());
+
+        // Velocities predicted to the end of the sub-step, for the
+        // dashpots
+        vector Ui, omegai, Uj, omegaj;
+        pi.predictedVelocities(dt, Ui, omegai);
+        pj.predictedVelocities(dt, Uj, omegaj);
+        const auto relativeVelocity = [&](const point& p)
+        {
+            return
+                (Ui + (omegai ^ (p - pi.position())))
+              - (Uj + (omegaj ^ (p - shift - pj.position())));
+        };
+
+        const contactLaw& law = laws_->law(materialOf_[i], materialOf_[j]);
+        if (c.nPoints > 1 && !law.needsHistory())
+        {
+            // A face or edge in contact: the law at each overlapping corner
+            // of the contact region, at its own overlap and velocity,
+            // weighted by its share of the summed overlap. Equal overlaps,
+            // or a single corner, give the law itself; a corner lifting
+            // off fades out continuously; the corners' dashpots damp
+            // rocking and twist.
+            scalar sumDepth = 0;
+            for (label k = 0; k < c.nPoints; ++k)
+            {
+                sumDepth += c.depths[k];
+            }
+            vector unused(Zero);
+            for (label k = 0; k < c.nPoints; ++k)
+            {
+                const point& pk = c.points[k];
+                const vector Uk = relativeVelocity(pk);
+                const vector Fk =
+                    (c.depths[k]/sumDepth)
+                   *law.force(c.depths[k], c.normal, Uk, M, dt, unused);
+                if (!iHeld)
+                {
+                    pi.addForceAt(Fk, pk);
+                }
+                if (!jHeld)
+                {
+                    pj.addForceAt(-Fk, pk - shift);
+                }
+            }
+            ++stats_.nContacts;
+            noteOverlap(i, j, c.overlap/min(Deq_[i], Deq_[j]));
+            continue;
+        }
+        const vector Urel = relativeVelocity(c.position);
+        const vector F = contactForce(law, c, Urel, M, dt, pairKey(i, j));
+        if (!iHeld)
+        {
+            pi.addForceAt(F, c.position);
+        }
+        if (!jHeld)
+        {
+            pj.addForceAt(-F, c.position - shift);
+        }
+        if (c.spread > 0)
+        {
+            const vector T = law.regionTorque
+            (
+                c.normal, omegai - omegaj,
+                c.spread, M, F & c.normal
+            );
+            if (!iHeld)
+            {
+                pi.addTorque(T);
+            }
+            if (!jHeld)
+            {
+                pj.addTorque(-T);
+            }
+        }
+
+        ++stats_.nContacts;
+        noteOverlap(i, j, c.overlap/min(Deq_[i], Deq_[j]));
+    }
+
+    // Contacts that ended lose their history
+    history_.swap(historyNew_);
+    historyNew_.clear();
+}
+
+
+// ************************************************************************* //
