@@ -117,6 +117,7 @@ void Foam::knownKeywords::require
     {
         return;
     }
+    DynamicList<word> variables;
     for (const word& key : written(dict, subDict, dictFile))
     {
         if (known.found(key))
@@ -134,6 +135,15 @@ void Foam::knownKeywords::require
                 nearest = k;
             }
         }
+        // At the top level a keyword far from every known one is taken as
+        // a variable ($name), as foamDictionary writes those of an
+        // included file (galileoScales) into the file it edits
+        const label nearMiss = max(label(2), label(nearest.size()/4));
+        if (subDict.empty() && best > nearMiss)
+        {
+            variables.append(key);
+            continue;
+        }
         const std::string scope =
             subDict.empty() ? std::string() : " in " + subDict;
         const std::string whose =
@@ -141,9 +151,14 @@ void Foam::knownKeywords::require
         FatalIOErrorInFunction(dict)
             << "unknown keyword " << key << scope.c_str() << " of "
             << (dictFile.empty() ? dict.topDict().name() : dictFile).c_str()
-            << " (a misspelling of "
-            << nearest << "?); the keywords " << whose.c_str() << " are "
-            << known << exit(FatalIOError);
+            << " (a misspelling of " << nearest << "?); the keywords "
+            << whose.c_str() << " are " << known << exit(FatalIOError);
+    }
+    if (variables.size())
+    {
+        Info<< "Entries of "
+            << (dictFile.empty() ? dict.topDict().name() : dictFile).c_str()
+            << " taken as variables, not options: " << variables << endl;
     }
 }
 
