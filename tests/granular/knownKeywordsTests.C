@@ -95,6 +95,21 @@ TEST(knownKeywords, entriesOfAnIncludedFileAreNotCounted)
     ASSERT_TRUE(d.found("surfacePointSpcin"));
     EXPECT_TRUE(errorOf([&]{ knownKeywords::require(d, known, word::null, dir/"props"); }).empty());
     EXPECT_TRUE(errorOf([&]{ knownKeywords::require(d, inner, "fictitiousDomain", dir/"props"); }).empty());
+
+    // A misspelling in the file itself is named with its line
+    {
+        OFstream os(dir/"props");
+        os  << "#include \"scales\"\nfluidDensity $rhoF;\n"
+            << "fictitiousDomain\n{\n    tolerence 1e-9;\n}\n";
+    }
+    IFstream is2(dir/"props");
+    const dictionary d2(is2);
+    const std::string msg = errorOf
+    (
+        [&]{ knownKeywords::require(d2, inner, "fictitiousDomain", dir/"props"); }
+    );
+    EXPECT_NE(msg.find("unknown keyword tolerence in fictitiousDomain"), std::string::npos) << msg;
+    EXPECT_NE(msg.find(", line 5 (a misspelling of tolerance?)"), std::string::npos) << msg;
     rmDir(dir);
 }
 

@@ -55,7 +55,8 @@ Foam::wordList Foam::knownKeywords::written
 (
     const dictionary& dict,
     const word& subDict,
-    const fileName& dictFile
+    const fileName& dictFile,
+    labelList* lines
 )
 {
     // The file given, or else the top-level dictionary's name (a file's
@@ -64,7 +65,24 @@ Foam::wordList Foam::knownKeywords::written
     (
         dictFile.empty() ? fileName(dict.topDict().name()) : dictFile
     );
-    wordList keys;
+    DynamicList<word> options;
+    DynamicList<label> at;
+    const auto collect = [&](const dictionary* scope)
+    {
+        if (!scope)
+        {
+            return;
+        }
+        for (const entry& e : *scope)
+        {
+            const word& k = e.keyword();
+            if (!k.empty() && k[0] != '#' && k != "FoamFile")
+            {
+                options.append(k);
+                at.append(e.startLineNumber());
+            }
+        }
+    };
     if (isFile(file))
     {
         // With directives off, "#include" stays an entry of its own and
@@ -74,29 +92,15 @@ Foam::wordList Foam::knownKeywords::written
         IFstream is(file);
         const dictionary raw(is);
         entry::disableFunctionEntries = directives;
-        const dictionary* scope = subDict.empty() ? &raw : raw.findDict(subDict);
-        if (scope)
-        {
-            keys = scope->toc();
-        }
+        collect(subDict.empty() ? &raw : raw.findDict(subDict));
     }
     else
     {
-        const dictionary* scope =
-            subDict.empty() ? &dict : dict.findDict(subDict);
-        if (scope)
-        {
-            keys = scope->toc();
-        }
+        collect(subDict.empty() ? &dict : dict.findDict(subDict));
     }
-
-    DynamicList<word> options(keys.size());
-    for (const word& k : keys)
+    if (lines)
     {
-        if (!k.empty() && k[0] != '#' && k != "FoamFile")
-        {
-            options.append(k);
-        }
+        *lines = at;
     }
     return wordList(std::move(options));
 }
@@ -118,8 +122,11 @@ void Foam::knownKeywords::require
         return;
     }
     DynamicList<word> variables;
-    for (const word& key : written(dict, subDict, dictFile))
+    labelList lines;
+    const wordList keys(written(dict, subDict, dictFile, &lines));
+    forAll(keys, i)
     {
+        const word& key = keys[i];
         if (known.found(key))
         {
             continue;
@@ -151,7 +158,7 @@ void Foam::knownKeywords::require
         FatalIOErrorInFunction(dict)
             << "unknown keyword " << key << scope.c_str() << " of "
             << (dictFile.empty() ? dict.topDict().name() : dictFile).c_str()
-            << " (a misspelling of " << nearest << "?); the keywords "
+            << ", line " << lines[i] << " (a misspelling of " << nearest << "?); the keywords "
             << whose.c_str() << " are " << known << exit(FatalIOError);
     }
     if (variables.size())
