@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "fictitiousDomain.H"
+#include "fvmDdt.H"
 #include "hexCellCheck.H"
 #include "particleGeometry.H"
 #include "Switch.H"
@@ -145,6 +146,7 @@ Foam::fictitiousDomain::fictitiousDomain
         dimensionedScalar("none", dimless, -1)
     ),
     stepStartSource_(),
+    stepDdtCoeff_(),
     stepStartDeviation_(),
     stepStartOwner_(),
     stepStartIndex_(-1),
@@ -236,10 +238,12 @@ void Foam::fictitiousDomain::discardStoredState(const fileName& particleFile)
 }
 
 
-void Foam::fictitiousDomain::keepStepStart()
+void Foam::fictitiousDomain::keepStepStart(const volVectorField& U)
 {
     stepStartIndex_ = mesh_.time().timeIndex();
     stepStartSource_ = source_.primitiveField();
+    stepDdtCoeff_ =
+        mesh_.time().deltaTValue()*fvm::ddt(U)().A()().primitiveField();
     if (treatment_ == surfaceTreatment::ghostCells)
     {
         stepStartDeviation_ = deviation_.primitiveField();

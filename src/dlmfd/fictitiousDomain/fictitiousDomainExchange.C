@@ -17,7 +17,6 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "fictitiousDomain.H"
-#include "fvmDdt.H"
 #include "particleGeometry.H"
 #include "smallDenseSolve.H"
 #include "fictitiousDomainParts.H"
@@ -251,10 +250,9 @@ Foam::fictitiousDomain::solve
             << " the step" << exit(FatalError);
     }
     vectorField& u = U.primitiveFieldRef();
-    scalarField a;
+    const scalarField& a = stepDdtCoeff_;
     if (inOuterLoop)
     {
-        a = dt*fvm::ddt(U)().A()().primitiveField();
         const vectorField& G = source_.primitiveField();
         u -= dt*stepStartSource_ + (dt/a)*(G - stepStartSource_);
     }

@@ -1,0 +1,301 @@
+/*---------------------------------------------------------------------------*\
+  dlmfdFoam: DLM/FD particle-resolved simulation of particulate flows
+-------------------------------------------------------------------------------
+License
+    This file is part of dlmfdFoam, an extension of OpenFOAM.
+
+    dlmfdFoam is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by the
+    Free Software Foundation, either version 3 of the License, or (at your
+    option) any later version. See <http://www.gnu.org/licenses/>.
+
+Description
+    The time step of Foam::dlmfdCoupling: the granular predictor, the
+    fictitious-domain step within the PIMPLE outer loop (correct) and after
+    it (evolve), the granular corrector and the particles' output line.
+
+\*---------------------------------------------------------------------------*/
+
+#include "dlmfdCoupling.H"
+#include "Time.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::List<Foam::fictitiousDomain::body> Foam::dlmfdCoupling::predictedBodies
+(
+    vectorField& V0,
+    vectorField& omega0
+) const
+{
+    using motionKind = rigidParticle::motionKind;
+
+    const scalar dt = mesh_.time().deltaTValue();
+    const label n = granular_.size();
+    V0.setSize(n);
+    omega0.setSize(n);
+    List<fictitiousDomain::body> bodies(n);
+    for (label i = 0; i < n; ++i)
+    {
+        const rigidParticle& p = granular_.particle(i);
+        fictitiousDomain::body& b = bodies[i];
+        V0[i] = p.velocity();
+        omega0[i] = p.omega();
+        b.shape = &p.shape();
+        b.R = p.R();
+        b.free = p.motion() == motionKind::free;
+        b.rotates = p.rotates();
+        b.excessDensity = densityRatio(i) - 1;
+        b.V = V0[i];
+        b.omega = omega0[i];
+        if (b.free)
+        {
+            b.V += dt*g_;
+            if (!p.isotropic() && b.rotates)
+            {
+                const tensor J = volumeInertia(i);
+                b.omega -= dt*(inv(J) & (omega0[i] ^ (J & omega0[i])));
+            }
+            if (p.planar())
+            {
+                b.V.z() = 0;
+                b.omega.x() = 0;
+                b.omega.y() = 0;
+            }
+        }
+        // The predictor moves the body over the step, its orientation too
+        // (a rotation by |omega*| dt about omega*), so that the constraint
+        // is imposed where the body will be
+        b.centre = p.position() + dt*b.V;
+        b.R = predictedRotation(p.R(), b.omega, dt);
+    }
+
+    return bodies;
+}
+
+
+// * * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * //
+
+Foam::tensor Foam::dlmfdCoupling::predictedRotation
+(
+    const tensor& R,
+    const vector& omega,
+    const scalar dt
+)
+{
+    const scalar angle = mag(omega)*dt;
+    if (!(angle > 0))
+    {
+        return R;
+    }
+    return quaternion(omega/mag(omega), angle).R() & R;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::dlmfdCoupling::correct(volVectorField& U)
+{
+    clockTime clock;
+
+    // The bodies where the predictor puts them, at every corrector: moved
+    // with the last corrector's velocities instead, the outer loop did not
+    // converge (cells entering and leaving the body) and the E2 sphere
+    // settled 5 % faster at CFL 0.5
+    vectorField V0, omega0;
+    const List<fictitiousDomain::body> bodies(predictedBodies(V0, omega0));
+
+    const label index = mesh_.time().timeIndex();
+    if (correctedIndex_ != index)
+    {
+        fd_.keepStepStart(U);
+        correctedIndex_ = index;
+        nCorrections_ = 0;
+    }
+    else
+    {
+        fd_.rewindToStepStart();
+    }
+    ++nCorrections_;
+    const scalar dt = mesh_.time().deltaTValue();
+    const scalar commBefore = fd_.communicationSeconds();
+    const List<fictitiousDomain::result>& res = fd_.solve(U, bodies, dt, true);
+    const scalar fdComm = fd_.communicationSeconds() - commBefore;
+    commSeconds_ += fdComm;
+
+    // How far the particles' velocities moved since the last corrector:
+    // what the outer loop has left to converge (on the master)
+    scalar change = 0;
+    if (Pstream::master())
+    {
+        lastV_.setSize(res.size(), vector::max);
+        forAll(res, i)
+        {
+            const vector V = bodies[i].V + res[i].dV;
+            if (nCorrections_ > 1)
+            {
+                change = max(change, mag(V - lastV_[i]));
+            }
+            lastV_[i] = V;
+        }
+    }
+
+    Info<< "DLM/FD outer corrector " << nCorrections_ << ": ";
+    if (nCorrections_ > 1)
+    {
+        Info<< "largest change of a particle velocity " << change << " m/s";
+    }
+    else
+    {
+        Info<< "particles constrained";
+    }
+    Info<< endl;
+    fdSeconds_ += clock.timeIncrement() - fdComm;
+}
+
+
+void Foam::dlmfdCoupling::evolve(volVectorField& U)
+{
+    const scalar dt = mesh_.time().deltaTValue();
+    const label n = granular_.size();
+    clockTime clock;
+
+    // (2) Granular predictor and the bodies of the constraint
+    vectorField V0, omega0;
+    const List<fictitiousDomain::body> bodies(predictedBodies(V0, omega0));
+    if (correctedIndex_ == mesh_.time().timeIndex())
+    {
+        // The outer correctors solved this step already: from its start
+        fd_.rewindToStepStart();
+    }
+
+    // (3) Fictitious domain, distributed; its results on the master
+    const scalar commBefore = fd_.communicationSeconds();
+    const List<fictitiousDomain::result>& res = fd_.solve(U, bodies, dt);
+    const scalar fdComm = fd_.communicationSeconds() - commBefore;
+    fdSeconds_ += clock.timeIncrement() - fdComm;
+    commSeconds_ += fdComm;
+
+    // (4) On the master: forces, torques and the granular corrector,
+    // contacts from X^n over dt
+    label nPoints = 0, nSurface = 0, nDropped = 0, maxIter = 0, nSub = 0;
+    scalar maxError = 0;
+    const bool corrected = correctedIndex_ == mesh_.time().timeIndex();
+    scalar lastChange = 0;
+    if (Pstream::master())
+    {
+        for (label i = 0; i < n; ++i)
+        {
+            const fictitiousDomain::body& b = bodies[i];
+            const fictitiousDomain::result& r = res[i];
+            nPoints += r.nInterior + r.nSurface;
+            nSurface += r.nSurface;
+            nDropped += r.nSurfaceDropped;
+            maxIter = max(maxIter, r.iterations);
+            maxError = max(maxError, r.constraintError);
+
+            const vector V3 = b.V + r.dV;
+            const vector omega3 = b.omega + r.dOmega;
+            if (corrected)
+            {
+                lastChange = max(lastChange, mag(V3 - lastV_[i]));
+            }
+            const scalar vp = b.shape->volume();
+            Fh_[i] = rhoFluid_*(vp*(V3 - V0[i])/dt - r.sumLambda);
+            Th_[i] =
+                rhoFluid_
+               *((volumeInertia(i) & (omega3 - omega0[i]))/dt - r.sumMoment);
+
+            if (b.free)
+            {
+                rigidParticle& p = granular_.particle(i);
+                p.setVelocity(V3);
+                p.setOmega(omega3);
+            }
+        }
+        nSub = granular_.evolve(dt);
+        granular_.checkHealth(mesh_.time().value());
+    }
+    granularSeconds_ += clock.timeIncrement();
+
+    // The new state to every rank
+    broadcastState();
+    commSeconds_ += clock.timeIncrement();
+
+    // The fluid carried by each free particle moves with it: its interior
+    // cells, at their centres relative to the body at X*, which moved by
+    // X^{n+1} - X* (less than half a period, however it was wrapped)
+    vectorField& u = U.primitiveFieldRef();
+    for (label i = 0; i < n; ++i)
+    {
+        if (!bodies[i].free)
+        {
+            continue;
+        }
+        const rigidParticle& p = granular_.particle(i);
+        const vector moved =
+            granular_.separation(p.position(), bodies[i].centre);
+        const fictitiousDomain::result& r = res[i];
+        forAll(r.interiorCells, j)
+        {
+            const vector arm = r.interiorCentres[j] - bodies[i].centre - moved;
+            u[r.interiorCells[j]] = p.velocity() + (p.omega() ^ arm);
+            if (r.interiorDeviation.size())
+            {
+                u[r.interiorCells[j]] += r.interiorDeviation[j];
+            }
+        }
+    }
+    U.correctBoundaryConditions();
+    fdSeconds_ += clock.timeIncrement();
+
+    const granularSystem::statistics& s = granular_.stats();
+    Info<< "DLM/FD: " << n << " particles, " << nPoints << " points";
+    if (fd_.treatment() == fictitiousDomain::surfaceTreatment::ghostCells)
+    {
+        Info<< " (" << nSurface << " ghost cells, " << nDropped
+            << " of them with no fluid cell in reach), momentum balance "
+            << maxError << " m/s";
+    }
+    else
+    {
+        Info<< " (" << nDropped << " surface points without a stencil left"
+            << " out), CG iterations <= " << maxIter << ", constraint error "
+            << maxError << " m/s";
+    }
+    if (corrected)
+    {
+        Info<< "; the last of " << nCorrections_ + 1 << " outer"
+            << " correctors changed the particle velocities by at most "
+            << lastChange << " m/s";
+    }
+    Info<< "; granular " << nSub << " sub-steps, "
+        << s.nContacts << " + " << s.nWallContacts << " wall contacts,"
+        << " max overlap " << s.maxOverlapRatio << " D" << endl;
+
+    if (series_.valid())
+    {
+        OFstream& os = series_();
+        const scalar t = mesh_.time().value();
+        for (label i = 0; i < n; ++i)
+        {
+            const rigidParticle& p = granular_.particle(i);
+            const quaternion& q = p.orientation();
+            const point& x = p.position();
+            const vector& V = p.velocity();
+            const vector& w = p.omega();
+            os  << t << ' ' << granular_.id(i) << ' '
+                << x.x() << ' ' << x.y() << ' ' << x.z() << ' '
+                << q.w() << ' ' << q.v().x() << ' ' << q.v().y() << ' '
+                << q.v().z() << ' '
+                << V.x() << ' ' << V.y() << ' ' << V.z() << ' '
+                << w.x() << ' ' << w.y() << ' ' << w.z() << ' '
+                << Fh_[i].x() << ' ' << Fh_[i].y() << ' ' << Fh_[i].z() << ' '
+                << Th_[i].x() << ' ' << Th_[i].y() << ' ' << Th_[i].z()
+                << nl;
+        }
+        os.flush();
+    }
+}
+
+
+// ************************************************************************* //
