@@ -82,6 +82,7 @@ Usage
 #include "OSspecific.H"
 #include "uniformDimensionedFields.H"
 #include "mathematicalConstants.H"
+#include "suspensionInput.H"
 
 #include <map>
 #include <vector>
@@ -92,127 +93,7 @@ using constant::mathematical::pi;
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
-namespace
-{
-
-//- One particle at one step of particles.dat
-struct sample
-{
-    label id;
-    point x;
-    vector V, omega, F;
-};
-
-
-//- The steps of every particles.dat under postProcessing/dlmfdParticles,
-//- a later start (a restart) replacing the steps it repeats
-std::map<scalar, std::vector<sample>> readSeries(const fileName& dir)
-{
-    std::map<scalar, std::vector<sample>> steps;
-    fileNameList starts(readDir(dir, fileName::DIRECTORY));
-    std::sort
-    (
-        starts.begin(), starts.end(),
-        [](const fileName& a, const fileName& b)
-        {
-            return readScalar(a) < readScalar(b);
-        }
-    );
-    for (const fileName& start : starts)
-    {
-        const fileName file(dir/start/"particles.dat");
-        if (!isFile(file))
-        {
-            continue;
-        }
-        // Steps of this file replace those of earlier ones from its start
-        const scalar t0 = readScalar(start);
-        steps.erase(steps.upper_bound(t0), steps.end());
-
-        std::ifstream is(file);
-        std::string line;
-        label lineNo = 0;
-        while (std::getline(is, line))
-        {
-            ++lineNo;
-            if (line.empty() || line[0] == '#')
-            {
-                continue;
-            }
-            std::istringstream ls(line);
-            scalar v[21];
-            for (scalar& x : v)
-            {
-                if (!(ls >> x))
-                {
-                    FatalErrorInFunction
-                        << file << " line " << lineNo << ": expected 21"
-                        << " numbers (time id x y z qw qx qy qz Ux Uy Uz"
-                        << " omegax omegay omegaz Fhx Fhy Fhz Thx Thy Thz)"
-                        << exit(FatalError);
-                }
-            }
-            sample s;
-            s.id = label(v[1]);
-            s.x = point(v[2], v[3], v[4]);
-            s.V = vector(v[9], v[10], v[11]);
-            s.omega = vector(v[12], v[13], v[14]);
-            s.F = vector(v[15], v[16], v[17]);
-            steps[v[0]].push_back(s);
-        }
-    }
-    return steps;
-}
-
-
-//- Writes a CSV file with a header line; nothing is left half-written
-class csvFile
-{
-    fileName file_;
-    autoPtr<OFstream> os_;
-
-public:
-
-    csvFile(const fileName& file, const string& header)
-    :
-        file_(file),
-        os_(new OFstream(file + ".tmp"))
-    {
-        os_().precision(8);
-        os_() << header.c_str() << nl;
-    }
-
-    OFstream& operator()()
-    {
-        return os_();
-    }
-
-    ~csvFile()
-    {
-        os_.clear();
-        Foam::mv(file_ + ".tmp", file_);
-    }
-};
-
-
-//- Terminal Re of a sphere at this Ga: C_D Re^2 = 4/3 Ga^2 with
-//- Schiller-Naumann's C_D = 24/Re (1 + 0.15 Re^0.687), by bisection
-scalar sphereTerminalReynolds(const scalar Ga)
-{
-    const auto f = [&](const scalar Re)
-    {
-        return 24*Re*(1 + 0.15*std::pow(Re, 0.687)) - 4.0/3.0*sqr(Ga);
-    };
-    scalar lo = 0, hi = max(1.0, sqr(Ga));
-    for (int i = 0; i < 200; ++i)
-    {
-        const scalar mid = 0.5*(lo + hi);
-        (f(mid) > 0 ? hi : lo) = mid;
-    }
-    return 0.5*(lo + hi);
-}
-
-} // End anonymous namespace
+using namespace Foam::suspensionInput;
 
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
