@@ -67,6 +67,7 @@ Usage
 #include "progressLog.H"
 #include "uniformDimensionedFields.H"
 #include "clockTime.H"
+#include "knownKeywords.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 

@@ -81,6 +81,7 @@ Usage
 #include "IOdictionary.H"
 #include "OFstream.H"
 #include "OSspecific.H"
+#include "knownKeywords.H"
 
 using namespace Foam;
 
@@ -131,6 +132,12 @@ int main(int argc, char *argv[])
             IOobject::MUST_READ,
             IOobject::NO_WRITE
         )
+    );
+
+    // A misspelt optional keyword would leave its default in force
+    knownKeywords::require
+    (
+        dict, wordList({"Ga", "m", "D", "fluidDensity", "gravityDirection"})
     );
 
     const scalar Ga = dict.get<scalar>("Ga");

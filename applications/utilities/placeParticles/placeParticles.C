@@ -59,6 +59,7 @@ Usage
 #include "mathematicalConstants.H"
 #include "granularSystem.H"
 #include "narrowPhase.H"
+#include "knownKeywords.H"
 
 using namespace Foam;
 
@@ -132,6 +133,21 @@ int main(int argc, char *argv[])
         readDict("collisionProperties", runTime.constant())
     );
     const IOdictionary dict(readDict("placeParticlesDict", runTime.system()));
+
+    // A misspelt optional keyword would leave its default in force
+    knownKeywords::require
+    (
+        dict,
+        wordList
+        ({
+            "shape", "material", "number", "solidFraction", "region",
+            "randomOrientation", "seed", "maxAttempts", "motion"
+        })
+    );
+    if (dict.isDict("region"))
+    {
+        knownKeywords::require(dict, wordList({"min", "max"}), "region");
+    }
 
     granularSystem granular(particleProperties, collisionProperties);
 

@@ -83,6 +83,7 @@ Usage
 #include "uniformDimensionedFields.H"
 #include "mathematicalConstants.H"
 #include "suspensionInput.H"
+#include "knownKeywords.H"
 
 #include <map>
 #include <vector>
@@ -127,6 +128,16 @@ int main(int argc, char *argv[])
             IOobject::NO_WRITE
         ),
         dictionary()
+    );
+    // A misspelt option would leave its default in force
+    knownKeywords::require
+    (
+        options,
+        wordList
+        ({
+            "averagingStart", "pairSampleInterval", "controlVolume",
+            "omegaBins", "jointBins", "isolatedReynolds"
+        })
     );
     const label pairInterval =
         options.getOrDefault<label>("pairSampleInterval", 10);

@@ -380,6 +380,15 @@ Foam::granularSystem::granularSystem
     cellWidth_(0),
     rMax_(0)
 {
+    // A misspelt keyword would leave a default in force or be ignored
+    knownKeywords::require(particleDict, wordList({"shapes", "materials"}));
+    for (const word& name : particleDict.subDict("materials").toc())
+    {
+        knownKeywords::require
+        (
+            particleDict, wordList({"density"}), "materials/" + name
+        );
+    }
     const dictionary& shapesDict = particleDict.subDict("shapes");
     for (const word& name : shapesDict.toc())
     {
@@ -391,6 +400,12 @@ Foam::granularSystem::granularSystem
         }
         shapeIndex_.insert(name, shapes_.size());
         shapes_.append(particleShape::New(name, shapesDict.subDict(name)));
+        knownKeywords::require
+        (
+            particleDict,
+            particleShape::keywords(shapesDict.subDict(name).get<word>("type")),
+            "shapes/" + name
+        );
     }
     if (shapes_.empty())
     {
@@ -423,6 +438,10 @@ void Foam::granularSystem::addWallPatches(const polyMesh& mesh)
 {
     if (const dictionary* wp = collisionDict_.findDict("wallPatches"))
     {
+        knownKeywords::require
+        (
+            collisionDict_, wordList({"patches", "material"}), "wallPatches"
+        );
         addWalls
         (
             planeWall::fromPatches

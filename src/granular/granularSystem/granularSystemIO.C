@@ -110,6 +110,10 @@ void Foam::granularSystem::readCollision(const dictionary& collisionDict)
     }
 
     const dictionary& domainDict = collisionDict.subDict("domain");
+    knownKeywords::require
+    (
+        collisionDict, wordList({"min", "max", "periodic"}), "domain"
+    );
     const point lo = domainDict.get<point>("min");
     const point hi = domainDict.get<point>("max");
     for (direction d = 0; d < 3; ++d)
@@ -132,6 +136,11 @@ void Foam::granularSystem::readCollision(const dictionary& collisionDict)
     {
         for (const word& name : wallsDict->toc())
         {
+            knownKeywords::require
+            (
+                collisionDict, wordList({"point", "normal", "material"}),
+                "walls/" + name
+            );
             walls_.append(planeWall::read(name, wallsDict->subDict(name)));
             wallMaterial_.append
             (

@@ -83,6 +83,16 @@ Foam::wordList Foam::knownKeywords::written
             }
         }
     };
+    // The sub-dictionary named by a path a/b/c below a dictionary
+    const auto descend = [&subDict](const dictionary& top)
+    {
+        const dictionary* scope = &top;
+        for (const word& part : subDict.empty() ? wordList() : fileName(subDict).components())
+        {
+            scope = scope ? scope->findDict(part) : nullptr;
+        }
+        return scope;
+    };
     if (isFile(file))
     {
         // With directives off, "#include" stays an entry of its own and
@@ -92,11 +102,11 @@ Foam::wordList Foam::knownKeywords::written
         IFstream is(file);
         const dictionary raw(is);
         entry::disableFunctionEntries = directives;
-        collect(subDict.empty() ? &raw : raw.findDict(subDict));
+        collect(descend(raw));
     }
     else
     {
-        collect(subDict.empty() ? &dict : dict.findDict(subDict));
+        collect(descend(dict));
     }
     if (lines)
     {
@@ -155,10 +165,15 @@ void Foam::knownKeywords::require
             subDict.empty() ? std::string() : " in " + subDict;
         const std::string whose =
             subDict.empty() ? std::string("there") : "of " + subDict;
+        // Name the nearest keyword only where it is a plausible misspelling
+        const std::string guess =
+            best <= nearMiss
+          ? " (a misspelling of " + nearest + "?)"
+          : std::string();
         FatalIOErrorInFunction(dict)
             << "unknown keyword " << key << scope.c_str() << " of "
             << (dictFile.empty() ? dict.topDict().name() : dictFile).c_str()
-            << ", line " << lines[i] << " (a misspelling of " << nearest << "?); the keywords "
+            << ", line " << lines[i] << guess.c_str() << "; the keywords "
             << whose.c_str() << " are " << known << exit(FatalIOError);
     }
     if (variables.size())

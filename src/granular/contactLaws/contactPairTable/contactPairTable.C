@@ -15,6 +15,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "contactPairTable.H"
+#include "knownKeywords.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -57,12 +58,14 @@ Foam::contactPairTable::contactPairTable
             const word nameBA(materials.name(b) + "-" + materials.name(a));
 
             const dictionary* coeffs = nullptr;
+            word given(nameAB);
             if (pairsPtr)
             {
                 coeffs = pairsPtr->findDict(nameAB);
                 if (!coeffs)
                 {
                     coeffs = pairsPtr->findDict(nameBA);
+                    given = nameBA;
                 }
             }
             if (!coeffs && lawName_ != "none")
@@ -95,6 +98,16 @@ Foam::contactPairTable::contactPairTable
                     lawName_, coeffs ? *coeffs : emptyDict, pair
                 ).ptr()
             );
+
+            // A misspelt optional coefficient (gammat) would leave its
+            // default in force
+            if (coeffs)
+            {
+                knownKeywords::require
+                (
+                    collisionDict, laws_.last().keywords(), "pairs/" + given
+                );
+            }
         }
     }
 }

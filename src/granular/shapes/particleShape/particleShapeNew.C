@@ -13,6 +13,7 @@ Class
 \*---------------------------------------------------------------------------*/
 
 #include "particleShape.H"
+#include "HashTable.H"
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
@@ -38,6 +39,29 @@ Foam::autoPtr<Foam::particleShape> Foam::particleShape::New
     }
 
     return autoPtr<particleShape>(cstrIter()(name, dict));
+}
+
+
+Foam::wordList Foam::particleShape::keywords(const word& type)
+{
+    // Kept beside the selector: a type reads D (equivalent diameter) or
+    // edge if it is a preset, vertices and scale if it is general, depth
+    // if it is planar
+    static const HashTable<wordList> byType
+    ({
+        {"sphere", wordList({"type", "D"})},
+        {"tetrahedron", wordList({"type", "D", "edge"})},
+        {"cube", wordList({"type", "D", "edge"})},
+        {"octahedron", wordList({"type", "D", "edge"})},
+        {"dodecahedron", wordList({"type", "D", "edge"})},
+        {"icosahedron", wordList({"type", "D", "edge"})},
+        {"convexPolyhedron", wordList({"type", "vertices", "scale"})},
+        {"circle", wordList({"type", "D", "depth"})},
+        {"convexPolygon", wordList({"type", "vertices", "scale", "depth"})},
+        {"square", wordList({"type", "D", "edge", "depth"})},
+        {"triangle", wordList({"type", "D", "edge", "depth"})}
+    });
+    return byType.lookup(type, wordList());
 }
 
 
