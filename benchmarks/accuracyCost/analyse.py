@@ -17,6 +17,7 @@ Writes next to results.csv:
 import csv
 import math
 import os
+import sys
 
 PROBLEMS = {
     "fixedSphere": "fixed sphere, Re = 100: C_D against Clift et al.",
@@ -120,8 +121,7 @@ def plot(rows, png):
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
     except ImportError:
-        print("matplotlib missing: no plot")
-        return
+        sys.exit("analyse.py: matplotlib is missing (etc/debianPackages: python3-matplotlib)")
     probs = [p for p in PROBLEMS if measured(rows, p)]
     fig, axes = plt.subplots(1, len(probs), figsize=(4.2 * len(probs), 3.8), squeeze=False)
     for ax, p in zip(axes[0], probs):
