@@ -68,6 +68,7 @@ Usage
 #include "uniformDimensionedFields.H"
 #include "clockTime.H"
 #include "knownKeywords.H"
+#include "costLine.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -183,19 +184,15 @@ int main(int argc, char *argv[])
         particles.valid() ? particles->granularSeconds() : 0;
     const scalar commSeconds =
         particles.valid() ? particles->communicationSeconds() : 0;
-    const scalar total = max
+    Info<< costLine::text
     (
-        fluidSeconds + fdSeconds + granularSeconds + commSeconds
-      + outputSeconds,
-        SMALL
-    );
-    Info<< "Cost (wall clock): fluid " << fluidSeconds << " s ("
-        << 100*fluidSeconds/total << " %), DLM/FD " << fdSeconds << " s ("
-        << 100*fdSeconds/total << " %), granular " << granularSeconds
-        << " s (" << 100*granularSeconds/total << " %), communication "
-        << commSeconds << " s (" << 100*commSeconds/total << " %), output "
-        << outputSeconds << " s (" << 100*outputSeconds/total << " %)"
-        << nl << endl;
+        wordList({"fluid", "DLM/FD", "granular", "communication", "output"}),
+        scalarList
+        ({
+            fluidSeconds, fdSeconds, granularSeconds, commSeconds,
+            outputSeconds
+        })
+    ).c_str() << nl << endl;
 
     Info<< "End\n" << endl;
 

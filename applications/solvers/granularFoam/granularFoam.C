@@ -45,6 +45,7 @@ Usage
 #include "argList.H"
 #include "Time.H"
 #include "granularRun.H"
+#include "costLine.H"
 #include "restartableTime.H"
 
 using namespace Foam;
@@ -78,10 +79,10 @@ int main(int argc, char *argv[])
     scene.run();
 
     const scalar g = scene.granularSeconds(), o = scene.outputSeconds();
-    const scalar total = max(g + o, SMALL);
-    Info<< nl << "Cost: granular " << g << " s (" << 100*g/total
-        << " %), output " << o << " s (" << 100*o/total << " %); "
-        << scene.nSubSteps() << " sub-steps, "
+    Info<< nl << costLine::text
+    (
+        wordList({"granular", "output"}), scalarList({g, o})
+    ).c_str() << "; " << scene.nSubSteps() << " sub-steps, "
         << scalar(scene.nSubSteps())*scene.granular().size()/max(g, SMALL)
         << " particle-steps/s" << nl << nl << "End" << nl << endl;
 
