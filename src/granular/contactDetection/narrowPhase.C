@@ -10,20 +10,19 @@ License
     option) any later version. See <http://www.gnu.org/licenses/>.
 
 Description
-    Foam::narrowPhase: the closed forms (sphere and circle pairs, shapes
-    against planes), the separating-axis tests of polygons and polyhedra,
-    and the dispatch by shape (shapeShape). libccd's GJK/EPA:
-    narrowPhaseGJK.C; two polyhedra's contact point from their touching
-    features: narrowPhaseFeatures.C.
+    Foam::narrowPhase: the closed forms (a sphere against a polyhedron,
+    shapes against planes) and the separating-axis tests of polygons and
+    polyhedra. The choice of test by the pair's shape families:
+    narrowPhaseDispatch.C; libccd's GJK/EPA: narrowPhaseGJK.C; two
+    polyhedra's contact point from their touching features:
+    narrowPhaseFeatures.C.
 
 \*---------------------------------------------------------------------------*/
 
 #include <cmath>
 
 #include "narrowPhase.H"
-#include "sphere.H"
 #include "convexPolyhedron.H"
-#include "circle.H"
 
 #include <algorithm>
 
@@ -76,11 +75,6 @@ namespace
             return o > 0;
         }
     };
-
-    const particleShapes::sphere* asSphere(const particleShape& shape)
-    {
-        return dynamic_cast<const particleShapes::sphere*>(&shape);
-    }
 }
 
 
@@ -214,7 +208,7 @@ bool Foam::narrowPhase::spherePolyhedron
 }
 
 
-bool Foam::narrowPhase::shapePlane
+bool Foam::narrowPhase::supportPlane
 (
     const posedShape& body,
     const point& p0,
@@ -222,17 +216,6 @@ bool Foam::narrowPhase::shapePlane
     contactGeometry& contact
 )
 {
-    if (const particleShapes::sphere* s = asSphere(body.shape))
-    {
-        return spherePlane(body.centre, s->radius(), p0, n, contact);
-    }
-    const auto* disc = dynamic_cast<const particleShapes::circle*>(&body.shape);
-    if (disc && mag(n.z()) < 1e-9)
-    {
-        // A wall of the 2D plane: the rim's nearest point, on the mid-plane
-        return spherePlane(body.centre, disc->radius(), p0, n, contact);
-    }
-
     const point deepest = body.support(-n);
     const scalar overlap = (p0 - deepest) & n;
     if (overlap <= 0)
@@ -241,18 +224,30 @@ bool Foam::narrowPhase::shapePlane
     }
 
     contact.set(deepest + 0.5*overlap*n, n, overlap);
+    return true;
+}
 
-    const auto* poly =
-        dynamic_cast<const particleShapes::convexPolyhedron*>(&body.shape);
-    if (!poly)
+
+bool Foam::narrowPhase::polyhedronPlane
+(
+    const posedShape& body,
+    const point& p0,
+    const vector& n,
+    contactGeometry& contact
+)
+{
+    if (!supportPlane(body, p0, n, contact))
     {
-        return true;
+        return false;
     }
+    const scalar overlap = contact.overlap;
+    const auto& poly =
+        static_cast<const particleShapes::convexPolyhedron&>(body.shape);
 
     // Depth-weighted mean of the vertices below the plane
     scalar sumDepth = 0;
     point weighted(Zero);
-    for (const point& v : poly->points())
+    for (const point& v : poly.points())
     {
         const point x = body.toWorld(v);
         const scalar depth = (p0 - x) & n;
@@ -269,7 +264,7 @@ bool Foam::narrowPhase::shapePlane
     // face lying on the plane: all its corners)
     scalar r2 = 0;
     label nNear = 0;
-    for (const point& v : poly->points())
+    for (const point& v : poly.points())
     {
         const point x = body.toWorld(v);
         if (((p0 - x) & n) > -overlap)
@@ -413,102 +408,6 @@ bool Foam::narrowPhase::polyhedronPolyhedron
     contact.set(origin, sat.normal, sat.best);
     polyhedronContactPoint(bi, bj, contact);
     return true;
-}
-
-
-bool Foam::narrowPhase::shapeShape
-(
-    const posedShape& bi,
-    const posedShape& bj,
-    contactGeometry& contact
-)
-{
-    const auto* ci = dynamic_cast<const particleShapes::circle*>(&bi.shape);
-    const auto* cj = dynamic_cast<const particleShapes::circle*>(&bj.shape);
-    if (ci || cj)
-    {
-        // 2D: in the plane of the first body's centre
-        if (ci && cj)
-        {
-            return sphereSphere
-            (
-                bi.centre, ci->radius(),
-                point(bj.centre.x(), bj.centre.y(), bi.centre.z()),
-                cj->radius(), contact
-            );
-        }
-        if (ci && isA<particleShapes::convexPolyhedron>(bj.shape))
-        {
-            return spherePolyhedron
-            (
-                bi.centre, ci->radius(), bj, contact, true
-            );
-        }
-        if (cj && isA<particleShapes::convexPolyhedron>(bi.shape))
-        {
-            if
-            (
-                !spherePolyhedron
-                (
-                    bj.centre, cj->radius(), bi, contact, true
-                )
-            )
-            {
-                return false;
-            }
-            contact.normal = -contact.normal;
-            return true;
-        }
-    }
-
-    const particleShapes::sphere* si = asSphere(bi.shape);
-    const particleShapes::sphere* sj = asSphere(bj.shape);
-    if (si && sj)
-    {
-        return sphereSphere
-        (
-            bi.centre, si->radius(), bj.centre, sj->radius(), contact
-        );
-    }
-
-    // Bounding spheres apart: no contact, whichever path would follow
-    if
-    (
-        magSqr(bi.centre - bj.centre)
-      > sqr(bi.shape.boundingRadius() + bj.shape.boundingRadius())
-    )
-    {
-        return false;
-    }
-
-    const auto* pi =
-        dynamic_cast<const particleShapes::convexPolyhedron*>(&bi.shape);
-    const auto* pj =
-        dynamic_cast<const particleShapes::convexPolyhedron*>(&bj.shape);
-    if (si && pj)
-    {
-        return spherePolyhedron(bi.centre, si->radius(), bj, contact);
-    }
-    if (sj && pi)
-    {
-        if (!spherePolyhedron(bj.centre, sj->radius(), bi, contact))
-        {
-            return false;
-        }
-        contact.normal = -contact.normal;
-        return true;
-    }
-
-    if (pi && pj && bi.shape.planar() && bj.shape.planar())
-    {
-        return polygonPolygon(bi, bj, contact);
-    }
-    if (pi && pj)
-    {
-        return polyhedronPolyhedron(bi, bj, contact);
-    }
-
-    return shapeShapeGJK(bi, bj, contact);
 }
 
 
