@@ -184,13 +184,16 @@ int main(int argc, char *argv[])
         particles.valid() ? particles->granularSeconds() : 0;
     const scalar commSeconds =
         particles.valid() ? particles->communicationSeconds() : 0;
+    // The particles' time series (particles.dat) is output too
+    const scalar seriesSeconds =
+        particles.valid() ? particles->seriesSeconds() : 0;
     Info<< costLine::text
     (
         wordList({"fluid", "DLM/FD", "granular", "communication", "output"}),
         scalarList
         ({
             fluidSeconds, fdSeconds, granularSeconds, commSeconds,
-            outputSeconds
+            outputSeconds + seriesSeconds
         })
     ).c_str() << nl << endl;
 

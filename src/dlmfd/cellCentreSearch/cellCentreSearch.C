@@ -19,6 +19,7 @@ License
 Foam::cellCentreSearch::cellCentreSearch(const polyMesh& mesh)
 :
     centres_(mesh.cellCentres()),
+    bounds_(),
     origin_(Zero),
     width_(Zero),
     nBins_(Zero)
@@ -30,6 +31,7 @@ Foam::cellCentreSearch::cellCentreSearch(const polyMesh& mesh)
         bb = boundBox(point::zero, point::one);
     }
     bb.inflate(1e-6);
+    bounds_ = bb;
     origin_ = bb.min();
 
     // Bins about two cells wide along each direction that has extent
@@ -86,6 +88,10 @@ void Foam::cellCentreSearch::cellsInBall
     DynamicList<label>& cells
 ) const
 {
+    if (!reaches(x, r))
+    {
+        return;
+    }
     const labelVector lo = binOf(x - vector::uniform(r));
     const labelVector hi = binOf(x + vector::uniform(r));
     const scalar r2 = sqr(r);
@@ -107,6 +113,22 @@ void Foam::cellCentreSearch::cellsInBall
             }
         }
     }
+}
+
+
+bool Foam::cellCentreSearch::reaches(const point& x, const scalar r) const
+{
+    scalar dist2 = 0;
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        const scalar out =
+            max(bounds_.min()[d] - x[d], x[d] - bounds_.max()[d]);
+        if (out > 0)
+        {
+            dist2 += sqr(out);
+        }
+    }
+    return dist2 <= sqr(r);
 }
 
 

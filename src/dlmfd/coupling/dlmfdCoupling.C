@@ -288,10 +288,12 @@ Foam::dlmfdCoupling::dlmfdCoupling
     Fh_(),
     Th_(),
     series_(),
+    seriesInterval_(properties_.getOrDefault<label>("seriesInterval", 1)),
     vtk_(mesh.time().globalPath()/"VTK", mesh.time().value()),
     fdSeconds_(0),
     commSeconds_(0),
     granularSeconds_(0),
+    seriesSeconds_(0),
     correctedIndex_(-1),
     nCorrections_(0),
     lastV_()
@@ -305,9 +307,18 @@ Foam::dlmfdCoupling::dlmfdCoupling
     );
     knownKeywords::require
     (
-        properties_, wordList({"fluidDensity", "fictitiousDomain"}),
+        properties_,
+        wordList({"fluidDensity", "seriesInterval", "fictitiousDomain"}),
         word::null, propertiesFile
     );
+    if (seriesInterval_ < 1)
+    {
+        FatalIOErrorInFunction(properties_)
+            << propertiesFile << ": seriesInterval " << seriesInterval_
+            << " is not allowed; it must be a whole number of time steps"
+            << " >= 1 (1: a row of particles.dat every step)"
+            << exit(FatalIOError);
+    }
     knownKeywords::require
     (
         properties_, fictitiousDomain::keywords(), "fictitiousDomain",

@@ -272,7 +272,7 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
         << s.nContacts << " + " << s.nWallContacts << " wall contacts,"
         << " max overlap " << s.maxOverlapRatio << " D" << endl;
 
-    if (series_.valid())
+    if (series_.valid() && mesh_.time().timeIndex() % seriesInterval_ == 0)
     {
         OFstream& os = series_();
         const scalar t = mesh_.time().value();
@@ -295,6 +295,7 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
         }
         os.flush();
     }
+    seriesSeconds_ += clock.timeIncrement();
 }
 
 

@@ -383,6 +383,26 @@ Foam::scalarList Foam::fictitiousDomain::cellSizes
 }
 
 
+Foam::List<Foam::vector> Foam::fictitiousDomain::nearShifts
+(
+    const point& x,
+    const scalar r
+) const
+{
+    const List<vector> all =
+        cellCentreSearch::periodicShifts(mesh_.bounds(), period_, x, r);
+    DynamicList<vector> near(all.size());
+    for (const vector& s : all)
+    {
+        if (search_.reaches(x - s, r))
+        {
+            near.append(s);
+        }
+    }
+    return List<vector>(std::move(near));
+}
+
+
 void Foam::fictitiousDomain::startCandidates
 (
     const UList<body>& bodies,

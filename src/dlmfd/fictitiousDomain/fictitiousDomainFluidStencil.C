@@ -297,11 +297,13 @@ void Foam::fictitiousDomain::findCandidates
         const particleShape& shape = *B.shape;
         const scalar rb = shape.boundingRadius();
         const scalar h = cand.h[b];
-        cand.shifts[b] = cellCentreSearch::periodicShifts
-        (
-            mesh_.bounds(), period_, B.centre, rb + reach()*h
-        );
+        cand.shifts[b] = nearShifts(B.centre, rb + reach()*h);
         const List<vector>& shifts = cand.shifts[b];
+        if (shifts.empty())
+        {
+            // Far from this rank: no cell, no surface point to place
+            continue;
+        }
 
         // A cell at C counts at C + s: it is near the body at x when C is
         // near x - s

@@ -79,7 +79,7 @@ Description
 
 #include "fictitiousDomain.H"
 #include "particleGeometry.H"
-#include "smallDenseSolve.H"
+#include "rigidMomentumBalance.H"
 #include "fictitiousDomainParts.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -101,10 +101,7 @@ void Foam::fictitiousDomain::findGhostCandidates
         const body& B = bodies[b];
         const scalar rb = B.shape->boundingRadius();
         const scalar h = cand.h[b];
-        cand.shifts[b] = cellCentreSearch::periodicShifts
-        (
-            mesh_.bounds(), period_, B.centre, rb + reach()*h
-        );
+        cand.shifts[b] = nearShifts(B.centre, rb + reach()*h);
         const List<vector>& shifts = cand.shifts[b];
         forAll(shifts, si)
         {
@@ -303,11 +300,7 @@ void Foam::fictitiousDomain::solveGhostBody
         }
         return cells.size() > 0;
     };
-    const auto cross = [](const vector& v)
-    {
-        // [v]x: [v]x a = v x a
-        return tensor(0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0);
-    };
+    const auto cross = &rigidMomentumBalance::cross;
 
     // The momentum balance, K y = rhs, y = (V, Omega). The body takes the
     // momentum that brings its cells to its rigid motion from the fluid
@@ -315,19 +308,13 @@ void Foam::fictitiousDomain::solveGhostBody
     // the description above), and that of the cut cells it forces
     const scalar mvp = B.excessDensity*B.shape->volume();
     const tensor mJ = B.excessDensity*(B.R & B.shape->volumeInertia() & B.R.T());
-    tensor KVV(mvp*tensor::I), KVO(Zero), KOV(Zero), KOO(mJ);
-    vector rhsV = mvp*B.V - released, rhsO = (mJ & B.omega) - releasedMoment;
+    rigidMomentumBalance balance
+    (
+        mvp, mJ, B.V, B.omega, released, releasedMoment
+    );
     for (label c = 0; c < nIn; ++c)
     {
-        const vector r = xIn[c] - X;
-        const scalar V = vIn[c];
-        KVV += V*tensor::I;
-        KVO -= V*cross(r);
-        KOV += V*cross(r);
-        KOO += V*(magSqr(r)*tensor::I - (r*r));
-        const vector known = uIn[c] - devIn[c];
-        rhsV += V*known;
-        rhsO += V*(r ^ known);
+        balance.addRigidCell(xIn[c] - X, vIn[c], uIn[c] - devIn[c]);
     }
 
     // A cut cell, s < h/2 out: u = u_r + s a_t + b s^2 n = P V + Q Omega +
@@ -381,13 +368,10 @@ void Foam::fictitiousDomain::solveGhostBody
         E[j] = sj*(tt & ua) + sqr(sj)*(nn & ub);
         P[j] = tensor::I - A;
         Q[j] += sj*(tt & cross(ra)) + sqr(sj)*(nn & cross(rb));
-        const scalar V = share[j]*vCut[j];
-        KVV += V*P[j];
-        KVO += V*Q[j];
-        KOV += V*(cross(rj) & P[j]);
-        KOO += V*(cross(rj) & Q[j]);
-        rhsV += V*(uCut[j] - E[j]);
-        rhsO += V*(rj ^ (uCut[j] - E[j]));
+        balance.addAffineCell
+        (
+            rj, share[j]*vCut[j], P[j], Q[j], E[j], uCut[j]
+        );
     }
 
     // The unknown modes: translations 0-2, rotations 3-5; the others keep
@@ -399,61 +383,15 @@ void Foam::fictitiousDomain::solveGhostBody
           ? (B.rotates ? labelList{0, 1, 5} : labelList{0, 1})
           : (B.rotates ? labelList{0, 1, 2, 3, 4, 5} : labelList{0, 1, 2});
     }
-    const auto K = [&](const label a, const label b) -> scalar
+    vector Vnew = B.V, omegaNew = B.omega;
+    if (!balance.solve(modes, Vnew, omegaNew))
     {
-        if (a < 3)
-        {
-            return b < 3 ? KVV(a, b) : KVO(a, b - 3);
-        }
-        return b < 3 ? KOV(a - 3, b) : KOO(a - 3, b - 3);
-    };
-    scalarList y(6);
-    for (direction d = 0; d < 3; ++d)
-    {
-        y[d] = B.V[d];
-        y[3 + d] = B.omega[d];
+        FatalErrorInFunction
+            << "the momentum balance of a particle at " << X
+            << " (m = " << 1 + B.excessDensity << ", " << nIn
+            << " cells inside) is singular; the particle needs m > 0"
+            << " and cells inside it" << exit(FatalError);
     }
-    if (modes.size())
-    {
-        const label nm = modes.size();
-        List<scalarList> A(nm, scalarList(nm));
-        scalarList rhs(nm);
-        boolList unknown(6, false);
-        for (const label a : modes)
-        {
-            unknown[a] = true;
-        }
-        forAll(modes, i)
-        {
-            const label a = modes[i];
-            rhs[i] = a < 3 ? rhsV[a] : rhsO[a - 3];
-            for (label b = 0; b < 6; ++b)
-            {
-                if (!unknown[b])
-                {
-                    rhs[i] -= K(a, b)*y[b];
-                }
-            }
-            forAll(modes, j)
-            {
-                A[i][j] = K(a, modes[j]);
-            }
-        }
-        if (!smallDenseSolve(A, rhs))
-        {
-            FatalErrorInFunction
-                << "the momentum balance of a particle at " << X
-                << " (m = " << 1 + B.excessDensity << ", " << nIn
-                << " cells inside) is singular; the particle needs m > 0"
-                << " and cells inside it" << exit(FatalError);
-        }
-        forAll(modes, i)
-        {
-            y[modes[i]] = rhs[i];
-        }
-    }
-    const vector Vnew(y[0], y[1], y[2]);
-    const vector omegaNew(y[3], y[4], y[5]);
     res.dV = Vnew - B.V;
     res.dOmega = omegaNew - B.omega;
     const auto rigidAt = [&](const point& x)
