@@ -175,8 +175,9 @@ TEST(rigidMomentumBalance, affineCellsDescribingRigidMotionActAsRigidOnes)
     Random rnd(6);
     const cloud c(rnd, 25);
     const vector Vstar(0, 0, -0.5), omegaStar(0.3, 0, 0);
-    rigidMomentumBalance rigid(c.volume(), 0.05*tensor::I, Vstar, omegaStar, Zero, Zero);
-    rigidMomentumBalance affine(c.volume(), 0.05*tensor::I, Vstar, omegaStar, Zero, Zero);
+    const tensor mJ(0.05*tensor::I);
+    rigidMomentumBalance rigid(c.volume(), mJ, Vstar, omegaStar, Zero, Zero);
+    rigidMomentumBalance affine(c.volume(), mJ, Vstar, omegaStar, Zero, Zero);
     forAll(c.r, i)
     {
         rigid.addRigidCell(c.r[i], c.V[i], c.u[i]);
