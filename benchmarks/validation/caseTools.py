@@ -1,8 +1,11 @@
-"""Helpers shared by the validation scripts that build their cases from a
-tutorial: editing a dictionary in place, and the graded mesh of a settling
-column (uniform around the vertical axis, growing towards the side walls).
+"""Helpers shared by the benchmark scripts that build their cases from a
+tutorial: editing a dictionary in place (by pattern, or an entry through
+foamDictionary), and the graded mesh of a settling column (uniform around the
+vertical axis, growing towards the side walls).
 """
+import os
 import re
+import subprocess
 import sys
 
 
@@ -14,6 +17,14 @@ def sub(path, pattern, repl):
     if n != 1:
         sys.exit(f"{path}: pattern {pattern!r} found {n} times")
     open(path, "w").write(new)
+
+
+def foam_set(case, path, entry, value):
+    """Set one entry (sub-dictionaries separated by /) of the dictionary at
+    case/path with foamDictionary, which reads its #includes and writes the
+    whole dictionary back"""
+    subprocess.run(["foamDictionary", os.path.join(case, path), "-entry", entry, "-set",
+                    str(value)], check=True, capture_output=True)
 
 
 def growth(L, dx, n):

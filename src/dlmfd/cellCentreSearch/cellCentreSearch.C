@@ -116,19 +116,29 @@ void Foam::cellCentreSearch::cellsInBall
 }
 
 
-bool Foam::cellCentreSearch::reaches(const point& x, const scalar r) const
+bool Foam::cellCentreSearch::ballReaches
+(
+    const boundBox& bb,
+    const point& x,
+    const scalar r
+)
 {
     scalar dist2 = 0;
     for (direction d = 0; d < vector::nComponents; ++d)
     {
-        const scalar out =
-            max(bounds_.min()[d] - x[d], x[d] - bounds_.max()[d]);
+        const scalar out = max(bb.min()[d] - x[d], x[d] - bb.max()[d]);
         if (out > 0)
         {
             dist2 += sqr(out);
         }
     }
     return dist2 <= sqr(r);
+}
+
+
+bool Foam::cellCentreSearch::reaches(const point& x, const scalar r) const
+{
+    return ballReaches(bounds_, x, r);
 }
 
 
@@ -156,18 +166,7 @@ Foam::List<Foam::vector> Foam::cellCentreSearch::periodicShifts
             {
                 vector s = shifts[i];
                 s[d] += sign*period[d];
-                const point y = x - s;
-                scalar dist2 = 0;
-                for (direction e = 0; e < vector::nComponents; ++e)
-                {
-                    const scalar out =
-                        max(bb.min()[e] - y[e], y[e] - bb.max()[e]);
-                    if (out > 0)
-                    {
-                        dist2 += sqr(out);
-                    }
-                }
-                if (dist2 <= sqr(r))
+                if (ballReaches(bb, x - s, r))
                 {
                     shifts.append(s);
                 }
