@@ -12,7 +12,9 @@ License
 Description
     The ghost-cell surface treatment of the fictitious-domain step
     (surfaceTreatment ghostCells): a shear flow along a face is carried
-    through the wall where the face is; every cell within a cell of the
+    through the wall where the face is (ghostShear mirrored), or given to
+    the viscous fluxes of the faces between the ghost and the fluid cells
+    only, the ghost cells moving rigidly (ghostShear viscous); every cell within a cell of the
     surface has fluid to fit, whatever the resolution (no point is left
     out); no fluid cell is forced, in a two-cell gap between two cubes
     neither; with ghostCutCells, only those the surface cuts (centres less
@@ -115,6 +117,42 @@ struct twoCubesInAGap
     }
 };
 
+//- A fixed cube of edge 0.4 whose +x face sits at x = xf = 0.717, a third
+//- of a cell from the cell faces at h = 1/24, and fluid in a shear
+//- U_y = a (x - xf) everywhere
+struct faceShear
+{
+    test::foamTestCase tc;
+    const fvMesh& mesh = tc.makeBoxMesh(24, 24, 24, vector::one);
+    tmp<volVectorField> tU = zeroU(mesh);
+    volVectorField& U = tU.ref();
+    const scalar a = 0.7, edge = 0.4;
+    const point X{0.517, 0.5, 0.5};
+    const scalar xf = X.x() + edge/2;
+    particleShapes::platonicSolid cube{"cube", "cube", edge};
+    List<fictitiousDomain::body> bodies{1};
+
+    faceShear()
+    {
+        forAll(U, c)
+        {
+            U[c] = vector(0, a*(mesh.C()[c].x() - xf), 0);
+        }
+        bodies[0].shape = &cube;
+        bodies[0].centre = X;
+        bodies[0].free = false;
+        bodies[0].excessDensity = 1;
+    }
+
+    //- Is x under the middle of the face, within a cell of it or beyond?
+    bool underFace(const point& x) const
+    {
+        const scalar h = 1.0/24;
+        return x.x() > xf - h && mag(x.y() - X.y()) < edge/2 - 3*h
+            && mag(x.z() - X.z()) < edge/2 - 3*h;
+    }
+};
+
 } // End anonymous namespace
 
 
@@ -126,46 +164,71 @@ TEST(ghostCells, linearShearAlongAFaceIsExtrapolatedThroughTheWall)
     // cell from the cell faces (h = 1/24); fluid in a shear U_y = a (x - xf)
     // on that side. The ghost cells under the middle of that face take the
     // same linear profile on the other side of the wall: U_y = a (x - xf) < 0
-    test::foamTestCase tc;
-    const fvMesh& mesh = tc.makeBoxMesh(24, 24, 24, vector::one);
-    tmp<volVectorField> tU = zeroU(mesh);
-    volVectorField& U = tU.ref();
-    const scalar a = 0.7, edge = 0.4;
-    const point X(0.517, 0.5, 0.5);
-    const scalar xf = X.x() + edge/2;
-    forAll(U, c)
-    {
-        U[c] = vector(0, a*(mesh.C()[c].x() - xf), 0);
-    }
-    particleShapes::platonicSolid cube("cube", "cube", edge);
-    List<fictitiousDomain::body> bodies(1);
-    bodies[0].shape = &cube;
-    bodies[0].centre = X;
-    bodies[0].free = false;
-    bodies[0].excessDensity = 1;
-
+    faceShear s;
     dictionary dict(ghostCells());
-    fictitiousDomain fd(mesh, dict);
-    const fictitiousDomain::result r = fd.solve(U, bodies, 0.01)[0];
+    dict.add("ghostShear", word("mirrored"));
+    fictitiousDomain fd(s.mesh, dict);
+    const fictitiousDomain::result r = fd.solve(s.U, s.bodies, 0.01)[0];
 
-    const scalar h = 1.0/24;
     label checked = 0;
-    forAll(r.interiorCells, i)
+    for (const label g : r.interiorCells)
     {
-        const point& x = mesh.C()[r.interiorCells[i]];
-        const bool underFace =
-            x.x() > xf - h && mag(x.y() - X.y()) < edge/2 - 3*h
-         && mag(x.z() - X.z()) < edge/2 - 3*h;
-        if (!underFace)
+        const point& x = s.mesh.C()[g];
+        if (s.underFace(x))
+        {
+            ++checked;
+            EXPECT_NEAR(s.U[g].y(), s.a*(x.x() - s.xf), 1e-12) << str(x);
+            EXPECT_LT(s.U[g].y(), 0) << str(x);
+        }
+    }
+    EXPECT_GE(checked, 9);
+    EXPECT_EQ(r.nSurfaceDropped, 0);
+}
+
+
+TEST(ghostCells, viscousShearMovesNoMassButGivesTheFluidTheWallShear)
+{
+    // The shear of the test above with ghostShear viscous (the default):
+    // the ghost cells under the face move rigidly (no velocity along the
+    // shell, so no mass flux through the body), and the face between each
+    // of them and its fluid neighbour carries the viscous flux of the
+    // mirrored velocity a (x_g - xf): the fluid cell gains
+    // nu a (x_g - xf)/h^2 per unit volume, the ghost cell loses as much,
+    // and the sources sum to zero over the mesh
+    faceShear s;
+    const scalar nu = 0.1, h = 1.0/24;
+    fictitiousDomain fd(s.mesh, ghostCells());
+    ASSERT_TRUE(fd.hasWallShearSource());
+    const fictitiousDomain::result r = fd.solve(s.U, s.bodies, 0.01)[0];
+    const volScalarField nuField
+    (
+        IOobject("nu", s.mesh.time().timeName(), s.mesh),
+        s.mesh,
+        dimensionedScalar("nu", dimViscosity, nu)
+    );
+    const tmp<volVectorField> tsrc = fd.wallShearSource(nuField);
+    const volVectorField& src = tsrc();
+
+    label checked = 0;
+    for (const label g : r.interiorCells)
+    {
+        const point& x = s.mesh.C()[g];
+        if (!s.underFace(x))
         {
             continue;
         }
         ++checked;
-        EXPECT_NEAR(U[r.interiorCells[i]].y(), a*(x.x() - xf), 1e-12) << str(x);
-        EXPECT_LT(U[r.interiorCells[i]].y(), 0) << str(x);
+        EXPECT_NEAR(s.U[g].y(), 0, 1e-12) << str(x);
+        const scalar expected = nu*s.a*(x.x() - s.xf)/sqr(h);
+        EXPECT_LT(expected, 0);
+        EXPECT_NEAR(src[g].y(), -expected, 1e-9*mag(expected)) << str(x);
+        // Its fluid neighbour across the face
+        const label c = s.mesh.findCell(x + vector(h, 0, 0));
+        ASSERT_GE(c, 0);
+        EXPECT_NEAR(src[c].y(), expected, 1e-9*mag(expected)) << str(x);
     }
     EXPECT_GE(checked, 9);
-    EXPECT_EQ(r.nSurfaceDropped, 0);
+    EXPECT_LT(mag(gSum(s.mesh.V()*src.primitiveField())), 1e-14);
 }
 
 
@@ -406,6 +469,18 @@ TEST(ghostCells, badSettingsAreRefusedNamingTheValidOnes)
     });
     EXPECT_NE(narrow.find("ghostFitRadius = 1"), std::string::npos) << narrow;
     EXPECT_NE(narrow.find(">= 1.5"), std::string::npos) << narrow;
+    const std::string shear = testInput::errorOf([&]
+    {
+        fictitiousDomain fd
+        (
+            mesh,
+            testInput::parse("surfaceTreatment ghostCells; ghostShear viscus;")
+        );
+    });
+    for (const char* name : {"viscus", "mirrored", "rigid", "viscous"})
+    {
+        EXPECT_NE(shear.find(name), std::string::npos) << shear;
+    }
 }
 
 

@@ -13,6 +13,7 @@ License
 
 #include "fictitiousDomain.H"
 #include "fvmDdt.H"
+#include "linear.H"
 #include "hexCellCheck.H"
 #include "particleGeometry.H"
 #include "Switch.H"
@@ -38,6 +39,15 @@ Foam::fictitiousDomain::cutCellForcingNames
     {cutCellForcing::full, "full"},
     {cutCellForcing::solidFraction, "solidFraction"},
     {cutCellForcing::solidFractionBothSides, "solidFractionBothSides"},
+});
+
+
+const Foam::Enum<Foam::fictitiousDomain::ghostShearModel>
+Foam::fictitiousDomain::ghostShearModelNames
+({
+    {ghostShearModel::mirrored, "mirrored"},
+    {ghostShearModel::rigid, "rigid"},
+    {ghostShearModel::viscous, "viscous"},
 });
 
 
@@ -107,6 +117,13 @@ Foam::fictitiousDomain::fictitiousDomain
             "ghostCutCells", dict, cutCellForcing::none
         )
     ),
+    ghostShear_
+    (
+        ghostShearModelNames.getOrDefault
+        (
+            "ghostShear", dict, ghostShearModel::viscous
+        )
+    ),
     surfacePoints_(dict.getOrDefault<Switch>("surfacePoints", true)),
     surfaceSpacing_(dict.getOrDefault<scalar>("surfacePointSpacing", 1)),
     stencilRadius_(dict.getOrDefault<scalar>("surfaceStencilRadius", 1.2)),
@@ -144,6 +161,19 @@ Foam::fictitiousDomain::fictitiousDomain
         ghostFieldIO(mesh, "ghostOwner"),
         mesh,
         dimensionedScalar("none", dimless, -1)
+    ),
+    mirror_
+    (
+        IOobject
+        (
+            "ghostMirror",
+            mesh.time().timeName(),
+            mesh,
+            hasWallShearSource() ? IOobject::READ_IF_PRESENT : IOobject::NO_READ,
+            hasWallShearSource() ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
+        ),
+        mesh,
+        dimensionedVector(dimVelocity, Zero)
     ),
     stepStartSource_(),
     stepDdtCoeff_(),
@@ -212,7 +242,7 @@ Foam::wordList Foam::fictitiousDomain::keywords()
 {
     return wordList
     ({
-        "surfaceTreatment", "ghostFitRadius", "ghostCutCells",
+        "surfaceTreatment", "ghostFitRadius", "ghostCutCells", "ghostShear",
         "surfacePoints", "surfacePointSpacing", "surfaceStencilRadius",
         "surfacePointRetraction", "tolerance", "maxIterations"
     });
@@ -235,6 +265,86 @@ void Foam::fictitiousDomain::discardStoredState(const fileName& particleFile)
     source_ == dimensionedVector(source_.dimensions(), Zero);
     deviation_ == dimensionedVector(deviation_.dimensions(), Zero);
     ghostOwner_ == dimensionedScalar("none", dimless, -1);
+    mirror_ == dimensionedVector(mirror_.dimensions(), Zero);
+}
+
+
+Foam::tmp<Foam::volVectorField> Foam::fictitiousDomain::wallShearSource
+(
+    const volScalarField& nu
+) const
+{
+    tmp<volVectorField> tsrc
+    (
+        new volVectorField
+        (
+            IOobject("wallShearSource", mesh_.time().timeName(), mesh_),
+            mesh_,
+            dimensionedVector(dimAcceleration, Zero)
+        )
+    );
+    vectorField& src = tsrc.ref().primitiveFieldRef();
+    const scalarField& V = mesh_.V();
+    const surfaceScalarField nuf(linearInterpolate(nu));
+    const surfaceScalarField& dc = mesh_.deltaCoeffs();
+    const surfaceScalarField& magSf = mesh_.magSf();
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const scalarField& body = ghostOwner_.primitiveField();
+    const vectorField& t = mirror_.primitiveField();
+
+    // A face between a body's cell g (t_g) and a fluid cell c: the flux
+    // nu |S_f| t_g/|d_f| into c, out of g
+    forAll(nei, f)
+    {
+        const label o = own[f], n = nei[f];
+        const bool oBody = body[o] >= 0, nBody = body[n] >= 0;
+        if (oBody == nBody)
+        {
+            continue;
+        }
+        const label g = oBody ? o : n, c = oBody ? n : o;
+        const vector F = nuf[f]*magSf[f]*dc[f]*t[g];
+        src[c] += F/V[c];
+        src[g] -= F/V[g];
+    }
+
+    // Across processor and periodic patches each side takes its own cell's
+    // share, with the neighbour's values of the other side
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatch& p = mesh_.boundary()[patchi];
+        if (!p.coupled())
+        {
+            continue;
+        }
+        const labelUList& fc = p.faceCells();
+        const scalarField bodyNbr(ghostOwner_.boundaryField()[patchi].patchNeighbourField());
+        const vectorField tNbr(mirror_.boundaryField()[patchi].patchNeighbourField());
+        const scalarField& nup = nuf.boundaryField()[patchi];
+        const scalarField& dcp = dc.boundaryField()[patchi];
+        const scalarField& magSp = magSf.boundaryField()[patchi];
+        forAll(fc, i)
+        {
+            const label l = fc[i];
+            const bool lBody = body[l] >= 0, nBody = bodyNbr[i] >= 0;
+            if (lBody == nBody)
+            {
+                continue;
+            }
+            const scalar coeff = nup[i]*magSp[i]*dcp[i]/V[l];
+            if (lBody)
+            {
+                src[l] -= coeff*t[l];
+            }
+            else
+            {
+                src[l] += coeff*tNbr[i];
+            }
+        }
+    }
+    tsrc.ref().correctBoundaryConditions();
+    return tsrc;
 }
 
 

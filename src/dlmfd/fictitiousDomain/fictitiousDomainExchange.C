@@ -313,6 +313,7 @@ Foam::fictitiousDomain::solve
         // this step sets those of the cells inside a body
         deviation_.primitiveFieldRef() = Zero;
         ghostOwner_.primitiveFieldRef() = -1;
+        mirror_.primitiveFieldRef() = Zero;
         for (label q = 0; q < nProcs; ++q)
         {
             sentCells[q].transfer(cellsTo[q]);
@@ -399,8 +400,13 @@ Foam::fictitiousDomain::solve
                     SubField<vector>(f, size, start);
                 if (ghost)
                 {
-                    deviations[rj.first()][rj.second()] =
-                        SubField<vector>(dev, size, start);
+                    vectorField& d = deviations[rj.first()][rj.second()];
+                    d = SubField<vector>(dev, size, start);
+                    if (dev.size() > f.size())
+                    {
+                        // ghostShear viscous: the mirrored velocities after
+                        d.append(SubField<vector>(dev, size, f.size() + start));
+                    }
                 }
                 start += size;
             }
@@ -440,10 +446,15 @@ Foam::fictitiousDomain::solve
                 results_[b].interiorDeviation =
                     SubField<vector>(backDev[j], nInside);
                 const labelList& cells = sentCells[q][j];
+                const bool mirrored = backDev[j].size() > cells.size();
                 for (label i = 0; i < nInside; ++i)
                 {
                     deviation_[cells[i]] = backDev[j][i];
                     ghostOwner_[cells[i]] = b;
+                    if (mirrored)
+                    {
+                        mirror_[cells[i]] = backDev[j][cells.size() + i];
+                    }
                 }
             }
         }
@@ -467,6 +478,7 @@ Foam::fictitiousDomain::solve
     source_.correctBoundaryConditions();
     deviation_.correctBoundaryConditions();
     ghostOwner_.correctBoundaryConditions();
+    mirror_.correctBoundaryConditions();
     return results_;
 }
 
