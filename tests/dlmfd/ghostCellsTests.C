@@ -14,9 +14,9 @@ Description
     (surfaceTreatment ghostCells): a shear flow along a face is carried
     through the wall where the face is (ghostShear mirrored), or given to
     the viscous fluxes of the faces between the ghost and the fluid cells
-    only, the ghost cells moving rigidly (ghostShear viscous); every cell within a cell of the
-    surface has fluid to fit, whatever the resolution (no point is left
-    out); no fluid cell is forced, in a two-cell gap between two cubes
+    only, the ghost cells moving rigidly (ghostShear viscous); every cell
+    within a cell of the surface has fluid to fit, whatever the resolution
+    (no point is left out); no fluid cell is forced, in a two-cell gap between two cubes
     neither; with ghostCutCells, only those the surface cuts (centres less
     than half a cell out).
 

@@ -169,7 +169,8 @@ Foam::fictitiousDomain::fictitiousDomain
             "ghostMirror",
             mesh.time().timeName(),
             mesh,
-            hasWallShearSource() ? IOobject::READ_IF_PRESENT : IOobject::NO_READ,
+            hasWallShearSource()
+          ? IOobject::READ_IF_PRESENT : IOobject::NO_READ,
             hasWallShearSource() ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
         ),
         mesh,
@@ -319,8 +320,14 @@ Foam::tmp<Foam::volVectorField> Foam::fictitiousDomain::wallShearSource
             continue;
         }
         const labelUList& fc = p.faceCells();
-        const scalarField bodyNbr(ghostOwner_.boundaryField()[patchi].patchNeighbourField());
-        const vectorField tNbr(mirror_.boundaryField()[patchi].patchNeighbourField());
+        const scalarField bodyNbr
+        (
+            ghostOwner_.boundaryField()[patchi].patchNeighbourField()
+        );
+        const vectorField tNbr
+        (
+            mirror_.boundaryField()[patchi].patchNeighbourField()
+        );
         const scalarField& nup = nuf.boundaryField()[patchi];
         const scalarField& dcp = dc.boundaryField()[patchi];
         const scalarField& magSp = magSf.boundaryField()[patchi];
