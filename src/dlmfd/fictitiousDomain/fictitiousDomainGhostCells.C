@@ -485,23 +485,23 @@ void Foam::fictitiousDomain::solveGhostBody
             addLink(x);
         }
         const scalar wn = linkSum/max(linkWeight, 0.5*h);
-        // The profile carried through the wall (mirrored), or none
-        const vector tangential =
-            ghostShear_ == ghostShearModel::mirrored
-          ? vector(-d*(a - (a & n)*n))
-          : vector(Zero);
-        dev[c] = fade*(tangential + wn*n);
-        if (viscous)
+        // The profile carried through the wall: in the cell's velocity
+        // (mirrored) or in the viscous fluxes to its fluid neighbours
+        // (viscous)
+        vector profile(-d*(a - (a & n)*n));
+        if (twoD_)
         {
-            mirror[c] = -fade*d*(a - (a & n)*n);
+            profile.z() = 0;
         }
+        const bool carried = ghostShear_ == ghostShearModel::mirrored;
+        dev[c] = fade*((carried ? profile : vector(Zero)) + wn*n);
         if (twoD_)
         {
             dev[c].z() = 0;
-            if (viscous)
-            {
-                mirror[c].z() = 0;
-            }
+        }
+        if (viscous)
+        {
+            mirror[c] = fade*profile;
         }
     }
 
