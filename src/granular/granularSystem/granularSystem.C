@@ -112,11 +112,6 @@ void Foam::granularSystem::updateParticleData()
         rMax = max(rMax, radius_[i]);
         Dmin = min(Dmin, particles_[i].shape().equivalentDiameter());
     }
-    if (skin_ < 0 && n)
-    {
-        skin_ = 0.1*Dmin;
-    }
-
     // Shortest contact of the scene: each pair of materials at the
     // smallest reduced mass among the particles present
     scalarList mMin(materials_.nParticleMaterials(), GREAT);
@@ -153,18 +148,7 @@ void Foam::granularSystem::updateParticleData()
     }
     dtMax_ = Tc < VGREAT ? Tc/subStepsPerContact_ : VGREAT;
 
-    // Cells no narrower than the interaction distance, and no more of
-    // them than particles: a pair search never sweeps a mostly empty grid
-    const scalar cellWidth = max
-    (
-        2*rMax + max(skin_, scalar(0)),
-        std::cbrt(domain_.volume()/max(n, label(1)))
-    );
-    cells_.reset(new linkedCells(domain_, periodic_, cellWidth));
-    cellWidth_ = cellWidth;
-    rMax_ = rMax;
-    xAtBuild_.clear();
-    rebuildList_ = true;
+    search_.reset(domain_, periodic_, n, rMax, Dmin);
     history_.clear();
 }
 
@@ -207,8 +191,7 @@ void Foam::granularSystem::subStep
     // kick and drift, the start of the force sum, and whether the Verlet
     // list must be rebuilt. Fixed particles take no part: they never move
     // and carry no force.
-    const bool checkList = contactsOn_ && xAtBuild_.size() == size();
-    const scalar limit2 = sqr(0.5*skin_);
+    const bool checkList = contactsOn_ && search_.built(size());
     const bool weight = magSqr(g_) > 0;
     const label nMoving = moving_.size();
     // The records are read in order, and each fills several cache lines:
@@ -238,13 +221,9 @@ void Foam::granularSystem::subStep
             p.addForce(Fext_[i]);
             p.addTorque(Text_[i]);
         }
-        if
-        (
-            checkList
-         && magSqr(cells_->separation(p.position(), xAtBuild_[i])) > limit2
-        )
+        if (checkList)
         {
-            rebuildList_ = true;
+            search_.noteMoved(i, p.position());
         }
     }
 
@@ -256,7 +235,7 @@ void Foam::granularSystem::subStep
         {
             for (label i = 0; i < size(); ++i)
             {
-                if (nearWallStart_[i + 1] > nearWallStart_[i])
+                if (search_.nearAWall(i))
                 {
                     addWallForces(i, dt);
                 }
@@ -321,7 +300,7 @@ bool Foam::granularSystem::contactsPossible(const scalar Deltat)
             if
             (
                 w.distance(particles_[i].position())
-             <= radius_[i] + reach_[i] + skin_
+             <= radius_[i] + reach_[i] + search_.skin()
             )
             {
                 return true;
@@ -331,20 +310,16 @@ bool Foam::granularSystem::contactsPossible(const scalar Deltat)
 
     // A pair that can touch: the broad phase at the distance two
     // particles can close over the step (a skin at least), without the
-    // narrow phase. The linked cells find pairs up to a cell apart only:
-    // a reach beyond that is treated as a possible contact.
-    const scalar search = max(skin_, 2*maxReach);
-    if (2*rMax_ + search > cellWidth_)
-    {
-        return true;
-    }
+    // narrow phase
     positionsNow_.setSize(size());
     for (label i = 0; i < size(); ++i)
     {
         positionsNow_[i] = particles_[i].position();
     }
-    cells_->findPairs(positionsNow_, radius_, search, reachPairs_);
-    return reachPairs_.size() > 0;
+    return search_.anyPairWithin
+    (
+        positionsNow_, radius_, max(search_.skin(), 2*maxReach)
+    );
 }
 
 
@@ -368,7 +343,6 @@ Foam::granularSystem::granularSystem
     anyPeriodic_(false),
     subStepsPerContact_(20),
     overlapLimit_(0.05),
-    skin_(-1),
     g_(Zero),
     effects_(effects),
     collisionMode_(sceneEffects::collisionMode::on),
@@ -376,9 +350,7 @@ Foam::granularSystem::granularSystem
     rotationOn_(effects_.settle("rotation", true, "default")),
     externalForcesOn_(false),
     dtMax_(VGREAT),
-    rebuildList_(true),
-    cellWidth_(0),
-    rMax_(0)
+    search_()
 {
     // A misspelt keyword would leave a default in force or be ignored
     knownKeywords::require(particleDict, wordList({"shapes", "materials"}));

@@ -147,7 +147,7 @@ void Foam::granularSystem::checkStart(const fileName& file)
             x[i] = particles_[i].position();
         }
         DynamicList<labelPair> pairs;
-        cells_->findPairs(x, radius_, 0, pairs);
+        search_.cells().findPairs(x, radius_, 0, pairs);
         point xjImage;
         for (const labelPair& ij : pairs)
         {

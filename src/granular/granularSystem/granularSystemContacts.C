@@ -23,72 +23,22 @@ Description
 
 void Foam::granularSystem::updateCandidates()
 {
-    if (!rebuildList_ && xAtBuild_.size() == size())
+    if (!search_.needsBuild(size()))
     {
         return;
     }
-    rebuildList_ = false;
-
-    xAtBuild_.setSize(size());
+    // Walls act on the free particles only
+    pointField x(size());
+    boolList wallsAct(size());
     for (label i = 0; i < size(); ++i)
     {
-        xAtBuild_[i] = particles_[i].position();
+        x[i] = particles_[i].position();
+        wallsAct[i] =
+            particles_[i].motion() == rigidParticle::motionKind::free;
     }
-    // In (i, j) order: the forces are summed in the same order whenever
-    // the list was built, so that a restart continues bitwise
-    cells_->findPairs(xAtBuild_, radius_, skin_, candidates_);
-
-    // A particle moves by at most skin/2 relative to a wall before the
-    // next build; a whole skin is kept, as for the pairs
-    nearWallStart_.setSize(size() + 1);
-    DynamicList<label> near(nearWalls_.size());
-    for (label i = 0; i < size(); ++i)
-    {
-        nearWallStart_[i] = near.size();
-        if (particles_[i].motion() != rigidParticle::motionKind::free)
-        {
-            continue;
-        }
-        forAll(walls_, w)
-        {
-            if (walls_[w].distance(xAtBuild_[i]) <= radius_[i] + skin_)
-            {
-                near.append(w);
-            }
-        }
-    }
-    nearWallStart_[size()] = near.size();
-    nearWalls_.transfer(near);
+    search_.build(x, radius_, walls_, wallsAct);
 
     ++stats_.nListBuilds;
-}
-
-
-Foam::vector Foam::granularSystem::contactForce
-(
-    const contactLaw& law,
-    const contactGeometry& c,
-    const vector& Urel,
-    const scalar M,
-    const scalar dt,
-    const std::uint64_t key
-)
-{
-    if (!law.needsHistory())
-    {
-        vector unused(Zero);
-        return law.force(c.overlap, c.normal, Urel, M, dt, unused);
-    }
-
-    vector h(Zero);
-    const auto iter = history_.find(key);
-    if (iter != history_.end())
-    {
-        h = iter->second;
-    }
-    const vector F = law.force(c.overlap, c.normal, Urel, M, dt, h);
-    historyNew_[key] = h;
-    return F;
 }
 
 
@@ -100,9 +50,8 @@ void Foam::granularSystem::addWallForces(const label i, const scalar dt)
         return;
     }
     contactGeometry c;
-    for (label k = nearWallStart_[i]; k < nearWallStart_[i + 1]; ++k)
+    for (const label w : search_.nearWalls(i))
     {
-        const label w = nearWalls_[k];
         if (!wallTouches(i, w, c))
         {
             continue;
@@ -112,7 +61,7 @@ void Foam::granularSystem::addWallForces(const label i, const scalar dt)
         const vector Urel = Ui + (omegai ^ (c.position - pi.position()));
         const contactLaw& law = laws_->law(materialOf_[i], wallMaterial_[w]);
         const vector F =
-            contactForce(law, c, Urel, pi.mass(), dt, wallKey(i, w));
+            history_.force(law, c, Urel, pi.mass(), dt, i, -1 - w);
         pi.addForceAt(F, c.position);
         if (c.spread > 0)
         {
@@ -135,11 +84,12 @@ void Foam::granularSystem::addPairForces(const scalar dt)
 {
     using motionKind = rigidParticle::motionKind;
 
-    stats_.nCandidatePairs = candidates_.size();
+    const DynamicList<labelPair>& candidates = search_.pairs();
+    stats_.nCandidatePairs = candidates.size();
 
     contactGeometry c;
 
-    for (const labelPair& ij : candidates_)
+    for (const labelPair& ij : candidates)
     {
         const label i = ij.first(), j = ij.second();
         rigidParticle& pi = particles_[i];
@@ -214,7 +164,7 @@ void Foam::granularSystem::addPairForces(const scalar dt)
             continue;
         }
         const vector Urel = relativeVelocity(c.position);
-        const vector F = contactForce(law, c, Urel, M, dt, pairKey(i, j));
+        const vector F = history_.force(law, c, Urel, M, dt, i, j);
         if (!iHeld)
         {
             pi.addForceAt(F, c.position);
@@ -245,8 +195,7 @@ void Foam::granularSystem::addPairForces(const scalar dt)
     }
 
     // Contacts that ended lose their history
-    history_.swap(historyNew_);
-    historyNew_.clear();
+    history_.endSubStep();
 }
 
 

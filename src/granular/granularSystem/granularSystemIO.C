@@ -48,7 +48,6 @@ Description
 #include "uniformDimensionedFields.H"
 #include "objectRegistry.H"
 #include "Time.H"
-#include <algorithm>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -101,13 +100,14 @@ void Foam::granularSystem::readCollision(const dictionary& collisionDict)
             << " 0.001-0.01)" << exit(FatalIOError);
     }
 
-    skin_ = -1;
-    if (collisionDict.readIfPresent("skin", skin_) && !(skin_ >= 0))
+    scalar skin = -1;
+    if (collisionDict.readIfPresent("skin", skin) && !(skin >= 0))
     {
         FatalIOErrorInFunction(collisionDict)
-            << "skin = " << skin_ << " is not allowed; it must be >= 0 [m]"
+            << "skin = " << skin << " is not allowed; it must be >= 0 [m]"
             << exit(FatalIOError);
     }
+    search_.setSkin(skin);
 
     const dictionary& domainDict = collisionDict.subDict("domain");
     knownKeywords::require
@@ -403,7 +403,7 @@ void Foam::granularSystem::readParticles
                     << " particle that is not in the file"
                     << exit(FatalIOError);
             }
-            history_[j >= 0 ? pairKey(i, j) : wallKey(i, -1 - j)] = history;
+            history_.set(i, j, history);
             t = token(cs);
         }
     }
@@ -449,21 +449,11 @@ void Foam::granularSystem::writeParticles(const fileName& dir) const
         if (!history_.empty())
         {
             // Sorted, so that equal states write equal files
-            List<std::pair<std::uint64_t, vector>> sorted
-            (
-                history_.begin(), history_.end()
-            );
-            std::sort
-            (
-                sorted.begin(), sorted.end(),
-                [](const auto& a, const auto& b){ return a.first < b.first; }
-            );
             os  << "\ncontacts\n(\n";
-            for (const auto& c : sorted)
+            for (const auto& c : history_.entries())
             {
-                const label i = label(std::int32_t(c.first >> 32));
-                const label j = label(std::int32_t(c.first & 0xffffffffu));
-                os  << "((" << i << ' ' << j << ") " << c.second << ")\n";
+                os  << "((" << c.first.first() << ' ' << c.first.second()
+                    << ") " << c.second << ")\n";
             }
             os  << ");\n";
         }
