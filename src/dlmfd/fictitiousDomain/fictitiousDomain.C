@@ -133,10 +133,7 @@ Foam::fictitiousDomain::fictitiousDomain
     search_(mesh),
     twoD_(mesh.nSolutionD() == 2),
     period_(Zero),
-    cellOwner_(mesh.nCells(), -1),
-    ownerDist2_(mesh.nCells(), GREAT),
-    ownerInside_(mesh.nCells(), false),
-    touched_(),
+    owners_(mesh.nCells()),
     source_
     (
         IOobject
@@ -404,31 +401,6 @@ void Foam::fictitiousDomain::setPeriodicity(const vector& period)
 }
 
 
-void Foam::fictitiousDomain::claim
-(
-    const label c,
-    const label b,
-    const scalar d2,
-    const bool inside
-)
-{
-    if (cellOwner_[c] < 0)
-    {
-        touched_.append(c);
-    }
-    const bool wins =
-        cellOwner_[c] < 0
-     || (inside && !ownerInside_[c])
-     || (inside == ownerInside_[c] && d2 < ownerDist2_[c]);
-    if (wins)
-    {
-        cellOwner_[c] = b;
-        ownerDist2_[c] = d2;
-        ownerInside_[c] = inside;
-    }
-}
-
-
 Foam::scalarList Foam::fictitiousDomain::cellSizes
 (
     const UList<body>& bodies
@@ -527,13 +499,7 @@ void Foam::fictitiousDomain::startCandidates
 )
 {
     // The claims of the last step are undone
-    for (const label c : touched_)
-    {
-        cellOwner_[c] = -1;
-        ownerDist2_[c] = GREAT;
-        ownerInside_[c] = false;
-    }
-    touched_.clear();
+    owners_.reset();
 
     const label n = bodies.size();
     cand.h = cellSizes(bodies);

@@ -83,7 +83,7 @@ void Foam::fictitiousDomain::collect
     forAll(cand.interior[b], i)
     {
         const label c = cand.interior[b][i];
-        if (cellOwner_[c] == b)
+        if (owners_.owner(c) == b)
         {
             localOf(c, cand.interiorShift[b][i]);
         }
@@ -101,7 +101,7 @@ void Foam::fictitiousDomain::collect
         forAll(near, i)
         {
             const label c = near[i];
-            if (cellOwner_[c] == b && !ownerInside_[c])
+            if (owners_.owner(c) == b && !owners_.inside(c))
             {
                 localOf(c, cand.stencilShifts[b][0][i]);
             }
@@ -111,7 +111,7 @@ void Foam::fictitiousDomain::collect
         forAll(near, i)
         {
             const label c = near[i];
-            if (cellOwner_[c] < 0 || !ownerInside_[c])
+            if (owners_.owner(c) < 0 || !owners_.inside(c))
             {
                 localOf(c, cand.stencilShifts[b][0][i]);
             }
@@ -125,7 +125,7 @@ void Foam::fictitiousDomain::collect
             const label start = stencilCell.size();
             forAll(st, i)
             {
-                if (cellOwner_[st[i]] == b)
+                if (owners_.owner(st[i]) == b)
                 {
                     stencilCell.append
                     (

@@ -318,7 +318,7 @@ void Foam::fictitiousDomain::findCandidates
                 {
                     cand.interior[b].append(c);
                     cand.interiorShift[b].append(si);
-                    claim(c, b, magSqr(x - B.centre), true);
+                    owners_.claim(c, b, magSqr(x - B.centre), true);
                 }
             }
         }
@@ -349,7 +349,7 @@ void Foam::fictitiousDomain::findCandidates
                     {
                         st.append(c);
                         stShift.append(si);
-                        claim(c, b, magSqr(x - B.centre), false);
+                        owners_.claim(c, b, magSqr(x - B.centre), false);
                     }
                 }
             }

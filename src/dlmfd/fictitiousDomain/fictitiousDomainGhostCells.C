@@ -123,7 +123,7 @@ void Foam::fictitiousDomain::findGhostCandidates
                 {
                     cand.interior[b].append(c);
                     cand.interiorShift[b].append(si);
-                    claim(c, b, magSqr(x - B.centre), true);
+                    owners_.claim(c, b, magSqr(x - B.centre), true);
                 }
             }
         }
@@ -159,7 +159,7 @@ void Foam::fictitiousDomain::findGhostCandidates
                     // it (ghostCutCells full or solidFraction)
                     if (cutCells_ != cutCellForcing::none && bound < 0.5*h)
                     {
-                        claim(c, b, sqr(bound), false);
+                        owners_.claim(c, b, sqr(bound), false);
                     }
                 }
             }
@@ -191,7 +191,7 @@ void Foam::fictitiousDomain::releasedDeviations
         if
         (
             o < 0 || o >= bodies.size()
-         || (cellOwner_[c] == o && ownerInside_[c])
+         || (owners_.owner(c) == o && owners_.inside(c))
         )
         {
             continue;
