@@ -4,9 +4,11 @@ results.csv (called by `run --analyse`).
 Writes next to results.csv:
   accuracyCost.png    |error| against core-seconds per particle per D/U_ref,
                       one panel per problem, one marker per sweep, one
-                      colour per surface treatment (fluidStencil: before,
-                      ghostCells: after; ghostCells+nOuterCorrectors2: the
-                      constraint inside two PIMPLE outer correctors), the
+                      colour per surface treatment (fluidStencil; ghostCells
+                      as first written, ghostShear mirrored; the
+                      periodic-suspension tutorials' coupling, ghostShear
+                      viscous + ghostCutCells solidFraction; each also with
+                      the constraint inside two PIMPLE outer correctors), the
                       Pareto front of each (no run of that treatment both
                       cheaper and more accurate)
   table.md            every run: settings, error, wall, core-seconds, memory
@@ -25,9 +27,21 @@ PROBLEMS = {
     "tenCateE2": "ten Cate E2: u_max against 0.05718 m/s",
     "tenCateE2bounce": "E2's bounce on the floor: rebound height against 80 sub-steps",
 }
-TREATMENTS = {"fluidStencil": "tab:blue", "ghostCells": "tab:red",
+TUTORIAL = "ghostCells+ghostShearviscous+ghostCutCellssolidFraction"
+TREATMENTS = {"fluidStencil": "tab:blue",
+              # ghost cells as first written (ghostShear mirrored: fluid through
+              # the bodies, found 2026-12-02)
+              "ghostCells": "tab:red",
               # the constraint after each of 2 PIMPLE outer correctors (--outer 2)
-              "ghostCells+nOuterCorrectors2": "tab:green"}
+              "ghostCells+nOuterCorrectors2": "tab:green",
+              # the periodic-suspension tutorials' coupling (after the fix)
+              TUTORIAL: "tab:purple",
+              TUTORIAL + "+nOuterCorrectors2": "tab:orange"}
+# How the legend names them
+LABELS = {"ghostCells": "ghostCells (mirrored, before)",
+          "ghostCells+nOuterCorrectors2": "ghostCells (mirrored) + 2 outer correctors",
+          TUTORIAL: "tutorials' coupling (viscous + solidFraction)",
+          TUTORIAL + "+nOuterCorrectors2": "tutorials' coupling + 2 outer correctors"}
 MARKERS = {"resolution": "o", "time step": "s", "tolerance": "^", "surface points": "D",
            "sub-steps": "v"}
 
@@ -134,11 +148,11 @@ def plot(rows, png):
                 if pts:
                     ax.plot([r["core_s_per_time_unit"] for r in pts],
                             [max(abs(r["error_percent"]), 1e-3) for r in pts], mk, mfc="none",
-                            color=colour, label=f"{t}: {sweep}")
+                            color=colour, label=f"{LABELS.get(t, t)}: {sweep}")
             front = pareto(rs)
             ax.plot([r["core_s_per_time_unit"] for r in front],
                     [max(abs(r["error_percent"]), 1e-3) for r in front], "-", color=colour,
-                    lw=0.8, label=f"{t}: Pareto front")
+                    lw=0.8, label=f"{LABELS.get(t, t)}: Pareto front")
         for lvl in (1, 3, 10):
             ax.axhline(lvl, color="0.8", lw=0.6, zorder=0)
         ax.set_xscale("log")
