@@ -16,8 +16,8 @@ Description
     the viscous fluxes of the faces between the ghost and the fluid cells
     only, the ghost cells moving rigidly (ghostShear viscous); every cell
     within a cell of the surface has fluid to fit, whatever the resolution
-    (no point is left out); no fluid cell is forced, in a two-cell gap between two cubes
-    neither; with ghostCutCells, only those the surface cuts (centres less
+    (no point is left out); no fluid cell is forced, in a two-cell gap
+    between two cubes neither; with ghostCutCells, only those the surface cuts (centres less
     than half a cell out).
 
 \*---------------------------------------------------------------------------*/

@@ -42,9 +42,10 @@ Description
     fixed sphere at Re 100 passed a fifth of the flow it met through its
     inside, out at the front stagnation point, and lost 16 % of its drag:
     benchmarks/fixedBodyDrag, case.ghostCellsBodyPassesNoFlow). Every
-    weight and the fade vanish where a cell enters or leaves them, so that the ghost velocities change
-    continuously as the body moves through the grid. A ghost cell with no
-    fluid cell in reach (two bodies in contact) moves rigidly.
+    weight and the fade vanish where a cell enters or leaves them, so that
+    the ghost velocities change continuously as the body moves through the
+    grid. A ghost cell with no fluid cell in reach (two bodies in contact)
+    moves rigidly.
 
     The cells the surface cuts (centres within half a cell of it): with
     ghostCutCells solidFractionBothSides each is forced by

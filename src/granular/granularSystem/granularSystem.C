@@ -265,6 +265,17 @@ void Foam::granularSystem::subStep
 }
 
 
+const Foam::pointField& Foam::granularSystem::positions()
+{
+    positionsNow_.setSize(size());
+    for (label i = 0; i < size(); ++i)
+    {
+        positionsNow_[i] = particles_[i].position();
+    }
+    return positionsNow_;
+}
+
+
 bool Foam::granularSystem::contactsPossible(const scalar Deltat)
 {
     // How far each particle can get over the step, from its speed and its
@@ -311,14 +322,9 @@ bool Foam::granularSystem::contactsPossible(const scalar Deltat)
     // A pair that can touch: the broad phase at the distance two
     // particles can close over the step (a skin at least), without the
     // narrow phase
-    positionsNow_.setSize(size());
-    for (label i = 0; i < size(); ++i)
-    {
-        positionsNow_[i] = particles_[i].position();
-    }
     return search_.anyPairWithin
     (
-        positionsNow_, radius_, max(search_.skin(), 2*maxReach)
+        positions(), radius_, max(search_.skin(), 2*maxReach)
     );
 }
 

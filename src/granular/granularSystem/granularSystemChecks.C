@@ -141,13 +141,8 @@ void Foam::granularSystem::checkStart(const fileName& file)
             }
         }
 
-        pointField x(size());
-        for (label i = 0; i < size(); ++i)
-        {
-            x[i] = particles_[i].position();
-        }
         DynamicList<labelPair> pairs;
-        search_.cells().findPairs(x, radius_, 0, pairs);
+        search_.cells().findPairs(positions(), radius_, 0, pairs);
         point xjImage;
         for (const labelPair& ij : pairs)
         {

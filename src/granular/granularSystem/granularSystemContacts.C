@@ -28,15 +28,13 @@ void Foam::granularSystem::updateCandidates()
         return;
     }
     // Walls act on the free particles only
-    pointField x(size());
     boolList wallsAct(size());
     for (label i = 0; i < size(); ++i)
     {
-        x[i] = particles_[i].position();
         wallsAct[i] =
             particles_[i].motion() == rigidParticle::motionKind::free;
     }
-    search_.build(x, radius_, walls_, wallsAct);
+    search_.build(positions(), radius_, walls_, wallsAct);
 
     ++stats_.nListBuilds;
 }
