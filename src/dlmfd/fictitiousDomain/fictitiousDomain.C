@@ -130,6 +130,7 @@ Foam::fictitiousDomain::fictitiousDomain
     retraction_(dict.getOrDefault<scalar>("surfacePointRetraction", 0)),
     tolerance_(dict.getOrDefault<scalar>("tolerance", 1e-10)),
     maxIterations_(dict.getOrDefault<label>("maxIterations", 1000)),
+    multipliers_(tolerance_, maxIterations_, mesh.nSolutionD() == 2),
     search_(mesh),
     twoD_(mesh.nSolutionD() == 2),
     period_(Zero),
