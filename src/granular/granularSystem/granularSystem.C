@@ -146,9 +146,9 @@ void Foam::granularSystem::updateParticleData()
             }
         }
     }
-    dtMax_ = Tc < VGREAT ? Tc/subStepsPerContact_ : VGREAT;
+    dtMax_ = Tc < VGREAT ? Tc/settings_.subStepsPerContact() : VGREAT;
 
-    search_.reset(domain_, periodic_, n, rMax, Dmin);
+    search_.reset(settings_.domain(), settings_.periodic(), n, rMax, Dmin);
     history_.clear();
 }
 
@@ -159,12 +159,12 @@ void Foam::granularSystem::wrapPeriodicDirections(rigidParticle& p) const
     bool moved = false;
     for (direction d = 0; d < 3; ++d)
     {
-        if (!periodic_[d])
+        if (!settings_.periodic()[d])
         {
             continue;
         }
-        const scalar lo = domain_.min()[d];
-        const scalar L = domain_.span()[d];
+        const scalar lo = settings_.domain().min()[d];
+        const scalar L = settings_.domain().span()[d];
         if (x[d] < lo || x[d] >= lo + L)
         {
             x[d] -= L*std::floor((x[d] - lo)/L);
@@ -344,11 +344,7 @@ Foam::granularSystem::granularSystem
     walls_(),
     wallMaterial_(),
     laws_(),
-    domain_(),
-    periodic_(false),
-    anyPeriodic_(false),
-    subStepsPerContact_(20),
-    overlapLimit_(0.05),
+    settings_(),
     g_(Zero),
     effects_(effects),
     collisionMode_(sceneEffects::collisionMode::on),

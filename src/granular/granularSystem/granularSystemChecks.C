@@ -80,15 +80,15 @@ void Foam::granularSystem::checkStart(const fileName& file)
 
     // Outside the domain along a direction that is not periodic (periodic
     // ones wrap), and planar particles turned out of the x-y plane
-    const point& lo = domain_.min();
-    const point& hi = domain_.max();
+    const point& lo = settings_.domain().min();
+    const point& hi = settings_.domain().max();
     for (label i = 0; i < size(); ++i)
     {
         const rigidParticle& p = particles_[i];
         const point& x = p.position();
         for (direction d = 0; d < 3; ++d)
         {
-            if (!periodic_[d] && !(x[d] >= lo[d] && x[d] <= hi[d]))
+            if (!settings_.periodic()[d] && !(x[d] >= lo[d] && x[d] <= hi[d]))
             {
                 problems.add
                 (
@@ -130,7 +130,7 @@ void Foam::granularSystem::checkStart(const fileName& file)
                 if
                 (
                     wallTouches(i, w, c)
-                 && c.overlap > overlapLimit_*Deq_[i]
+                 && c.overlap > settings_.overlapLimit()*Deq_[i]
                 )
                 {
                     OStringStream os;
@@ -156,7 +156,11 @@ void Foam::granularSystem::checkStart(const fileName& file)
                 continue;
             }
             const scalar D = min(Deq_[i], Deq_[j]);
-            if (pairTouches(i, j, c, xjImage) && c.overlap > overlapLimit_*D)
+            if
+            (
+                pairTouches(i, j, c, xjImage)
+             && c.overlap > settings_.overlapLimit()*D
+            )
             {
                 OStringStream os;
                 os  << describeContact(ij).c_str() << " overlap by "
@@ -171,7 +175,7 @@ void Foam::granularSystem::checkStart(const fileName& file)
         FatalErrorInFunction
             << file << ": " << problems.size() << " problem(s) with the"
             << " particles' positions:" << nl << problems.str().c_str()
-            << "    Overlaps beyond overlapLimit = " << overlapLimit_
+            << "    Overlaps beyond overlapLimit = " << settings_.overlapLimit()
             << " D (collisionProperties) are refused: move the particles"
             << " apart (placeParticles keeps a gap), into the domain, or"
             << " turn planar ones about z only." << exit(FatalError);
@@ -204,13 +208,13 @@ void Foam::granularSystem::checkHealth(const scalar time) const
                 << " (subStepsPerContact)." << exit(FatalError);
         }
     }
-    if (stats_.maxOverlapRatio > overlapLimit_)
+    if (stats_.maxOverlapRatio > settings_.overlapLimit())
     {
         FatalErrorInFunction
             << "time " << time << ": "
             << describeContact(stats_.maxOverlapContact).c_str()
             << " overlap by " << stats_.maxOverlapRatio
-            << " D, beyond overlapLimit = " << overlapLimit_ << " D"
+            << " D, beyond overlapLimit = " << settings_.overlapLimit() << " D"
             << " (constant/collisionProperties): the contact exploded" << nl
             << "    The run stops here without writing: the last write"
             << " time holds the last good state." << nl

@@ -80,57 +80,10 @@ void Foam::granularSystem::readCollision(const dictionary& collisionDict)
         })
     );
 
-    subStepsPerContact_ =
-        collisionDict.getOrDefault<label>("subStepsPerContact", 20);
-    if (subStepsPerContact_ < 1)
-    {
-        FatalIOErrorInFunction(collisionDict)
-            << "subStepsPerContact = " << subStepsPerContact_
-            << " is not allowed; it must be >= 1 (seed 001 uses 20)"
-            << exit(FatalIOError);
-    }
-
-    overlapLimit_ = collisionDict.getOrDefault<scalar>("overlapLimit", 0.05);
-    if (!(overlapLimit_ > 0 && overlapLimit_ < 1))
-    {
-        FatalIOErrorInFunction(collisionDict)
-            << "overlapLimit = " << overlapLimit_ << " is not allowed;"
-            << " 0 < overlapLimit < 1 (largest overlap over the smaller"
-            << " equivalent diameter; the laws' own design overlaps are"
-            << " 0.001-0.01)" << exit(FatalIOError);
-    }
-
-    scalar skin = -1;
-    if (collisionDict.readIfPresent("skin", skin) && !(skin >= 0))
-    {
-        FatalIOErrorInFunction(collisionDict)
-            << "skin = " << skin << " is not allowed; it must be >= 0 [m]"
-            << exit(FatalIOError);
-    }
-    search_.setSkin(skin);
-
+    // The scene's settings, each checked as it is read
+    settings_ = collisionSettings(collisionDict);
+    search_.setSkin(settings_.skin());
     const dictionary& domainDict = collisionDict.subDict("domain");
-    knownKeywords::require
-    (
-        collisionDict, wordList({"min", "max", "periodic"}), "domain"
-    );
-    const point lo = domainDict.get<point>("min");
-    const point hi = domainDict.get<point>("max");
-    for (direction d = 0; d < 3; ++d)
-    {
-        if (!(hi[d] > lo[d]))
-        {
-            FatalIOErrorInFunction(domainDict)
-                << "domain: max " << hi << " must exceed min " << lo
-                << " in every direction" << exit(FatalIOError);
-        }
-    }
-    domain_ = boundBox(lo, hi);
-    periodic_ = domainDict.getOrDefault<FixedList<bool, 3>>
-    (
-        "periodic", FixedList<bool, 3>(false)
-    );
-    anyPeriodic_ = periodic_[0] || periodic_[1] || periodic_[2];
 
     if (const dictionary* wallsDict = collisionDict.findDict("walls"))
     {
@@ -151,19 +104,21 @@ void Foam::granularSystem::readCollision(const dictionary& collisionDict)
 
     // Periodicity: the domain's directions; a declaration must agree
     const string domainName = domainDict.name();
+    const bool anyPeriodic = settings_.anyPeriodic();
+    const FixedList<bool, 3>& periodic = settings_.periodic();
     if
     (
-        effects_.settle("periodicity", anyPeriodic_, domainName + " periodic")
-     != anyPeriodic_
+        effects_.settle("periodicity", anyPeriodic, domainName + " periodic")
+     != anyPeriodic
     )
     {
         effects_.contradiction
         (
             "periodicity",
             "the domain of " + domainName + " has periodic "
-          + (anyPeriodic_ ? "directions " : "none ")
-          + "(periodic (" + Switch::name(periodic_[0]) + ' '
-          + Switch::name(periodic_[1]) + ' ' + Switch::name(periodic_[2])
+          + (anyPeriodic ? "directions " : "none ")
+          + "(periodic (" + Switch::name(periodic[0]) + ' '
+          + Switch::name(periodic[1]) + ' ' + Switch::name(periodic[2])
           + "))"
         );
     }
