@@ -10,9 +10,10 @@ License
     option) any later version. See <http://www.gnu.org/licenses/>.
 
 Description
-    The parallel exchange of Foam::fictitiousDomain: each rank's cells of
-    a body sent to the rank that solves it, the forces sent back, the
-    results gathered on the master; and the step itself (solve).
+    The step of Foam::fictitiousDomain (solve): each rank's cells of a
+    body collected for the rank that solves it, the bodies solved, their
+    forces put back into the rank's cells; the messages themselves are
+    Foam::bodyExchange's.
 
 \*---------------------------------------------------------------------------*/
 
@@ -20,36 +21,7 @@ Description
 #include "particleGeometry.H"
 #include "smallDenseSolve.H"
 #include "fictitiousDomainParts.H"
-
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
-
-namespace Foam
-{
-
-Ostream& operator<<(Ostream& os, const fictitiousDomain::contribution& c)
-{
-    os  << c.body << token::SPACE << c.centres << token::SPACE << c.volumes
-        << token::SPACE << c.u << token::SPACE << c.nInterior
-        << token::SPACE << c.nCut
-        << token::SPACE << c.deviation << token::SPACE << c.released
-        << token::SPACE << c.releasedMoment
-        << token::SPACE << c.surfacePoint << token::SPACE << c.stencilStart
-        << token::SPACE << c.stencilCell;
-    return os;
-}
-
-
-Istream& operator>>(Istream& is, fictitiousDomain::contribution& c)
-{
-    is  >> c.body >> c.centres >> c.volumes >> c.u >> c.nInterior
-        >> c.nCut
-        >> c.deviation >> c.released >> c.releasedMoment
-        >> c.surfacePoint >> c.stencilStart >> c.stencilCell;
-    return is;
-}
-
-} // End namespace Foam
-
+#include "bodyExchange.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -178,53 +150,6 @@ void Foam::fictitiousDomain::collect
 }
 
 
-void Foam::fictitiousDomain::gatherResults()
-{
-    // Each body was solved on one rank, zero elsewhere: sums give it
-    constexpr label nValues = 17;
-    scalarList values(nValues*results_.size(), Zero);
-    forAll(results_, b)
-    {
-        const result& r = results_[b];
-        scalar* v = &values[nValues*b];
-        for (direction d = 0; d < vector::nComponents; ++d)
-        {
-            v[d] = r.dV[d];
-            v[3 + d] = r.dOmega[d];
-            v[6 + d] = r.sumLambda[d];
-            v[9 + d] = r.sumMoment[d];
-        }
-        v[12] = r.nInterior;
-        v[13] = r.nSurface;
-        v[14] = r.nSurfaceDropped;
-        v[15] = r.iterations;
-        v[16] = r.constraintError;
-    }
-    Pstream::listCombineGather(values, plusEqOp<scalar>());
-    if (!Pstream::master())
-    {
-        return;
-    }
-    forAll(results_, b)
-    {
-        result& r = results_[b];
-        const scalar* v = &values[nValues*b];
-        for (direction d = 0; d < vector::nComponents; ++d)
-        {
-            r.dV[d] = v[d];
-            r.dOmega[d] = v[3 + d];
-            r.sumLambda[d] = v[6 + d];
-            r.sumMoment[d] = v[9 + d];
-        }
-        r.nInterior = label(v[12]);
-        r.nSurface = label(v[13]);
-        r.nSurfaceDropped = label(v[14]);
-        r.iterations = label(v[15]);
-        r.constraintError = v[16];
-    }
-}
-
-
 const Foam::List<Foam::fictitiousDomain::result>&
 Foam::fictitiousDomain::solve
 (
@@ -279,7 +204,6 @@ Foam::fictitiousDomain::solve
     {
         List<DynamicList<labelList>> cellsTo(nProcs);
         List<DynamicList<label>> bodiesTo(nProcs);
-        PstreamBuffers toSolvers(Pstream::commsTypes::nonBlocking);
         List<DynamicList<contribution>> outgoing(nProcs);
         labelList localIndex(mesh_.nCells(), -1);
         List<vector> released, releasedMoment;
@@ -318,32 +242,13 @@ Foam::fictitiousDomain::solve
         {
             sentCells[q].transfer(cellsTo[q]);
             sentBodies[q].transfer(bodiesTo[q]);
-            // One by one: a List of them would be checked for equal
-            // elements, which contributions do not compare
-            UOPstream os(q, toSolvers);
-            os << outgoing[q].size();
-            for (const contribution& con : outgoing[q])
-            {
-                os << con;
-            }
         }
-        clockTime clock;
-        toSolvers.finishedSends();
-        commSeconds_ += clock.timeIncrement();
 
         // The bodies this rank solves, from the cells of every rank
-        List<List<contribution>> incoming(nProcs);
-        for (label r = 0; r < nProcs; ++r)
-        {
-            UIPstream is(r, toSolvers);
-            label size = 0;
-            is >> size;
-            incoming[r].setSize(size);
-            for (contribution& con : incoming[r])
-            {
-                is >> con;
-            }
-        }
+        const List<List<contribution>> incoming
+        (
+            bodyExchange::toSolvers(outgoing, commSeconds_)
+        );
         List<DynamicList<const contribution*>> partsOf(bodies.size());
         List<DynamicList<labelPair>> whereFrom(bodies.size());
         forAll(incoming, r)
@@ -412,21 +317,16 @@ Foam::fictitiousDomain::solve
             }
         }
 
-        clock.timeIncrement();
-        PstreamBuffers toOwners(Pstream::commsTypes::nonBlocking);
-        for (label r = 0; r < nProcs; ++r)
-        {
-            UOPstream os(r, toOwners);
-            os << forces[r] << deviations[r];
-        }
-        toOwners.finishedSends();
-        commSeconds_ += clock.timeIncrement();
+        List<List<vectorField>> backAll, backDevAll;
+        bodyExchange::toOwners
+        (
+            forces, deviations, backAll, backDevAll, commSeconds_
+        );
         vectorField& src = source_.primitiveFieldRef();
         for (label q = 0; q < nProcs; ++q)
         {
-            List<vectorField> back, backDev;
-            UIPstream is(q, toOwners);
-            is >> back >> backDev;
+            const List<vectorField>& back = backAll[q];
+            const List<vectorField>& backDev = backDevAll[q];
             forAll(back, j)
             {
                 const labelList& cells = sentCells[q][j];
@@ -468,11 +368,7 @@ Foam::fictitiousDomain::solve
         G = stepStartSource_ + a*(G - stepStartSource_);
     }
 
-    {
-        clockTime clock;
-        gatherResults();
-        commSeconds_ += clock.elapsedTime();
-    }
+    bodyExchange::gatherResults(results_, commSeconds_);
 
     U.correctBoundaryConditions();
     source_.correctBoundaryConditions();

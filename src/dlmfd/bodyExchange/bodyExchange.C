@@ -1,0 +1,170 @@
+/*---------------------------------------------------------------------------*\
+  dlmfdFoam: DLM/FD particle-resolved simulation of particulate flows
+-------------------------------------------------------------------------------
+License
+    This file is part of dlmfdFoam, an extension of OpenFOAM.
+
+    dlmfdFoam is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by the
+    Free Software Foundation, either version 3 of the License, or (at your
+    option) any later version. See <http://www.gnu.org/licenses/>.
+\*---------------------------------------------------------------------------*/
+
+#include "bodyExchange.H"
+#include "PstreamBuffers.H"
+#include "clockTime.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+
+Ostream& operator<<(Ostream& os, const fictitiousDomain::contribution& c)
+{
+    os  << c.body << token::SPACE << c.centres << token::SPACE << c.volumes
+        << token::SPACE << c.u << token::SPACE << c.nInterior
+        << token::SPACE << c.nCut
+        << token::SPACE << c.deviation << token::SPACE << c.released
+        << token::SPACE << c.releasedMoment
+        << token::SPACE << c.surfacePoint << token::SPACE << c.stencilStart
+        << token::SPACE << c.stencilCell;
+    return os;
+}
+
+
+Istream& operator>>(Istream& is, fictitiousDomain::contribution& c)
+{
+    is  >> c.body >> c.centres >> c.volumes >> c.u >> c.nInterior
+        >> c.nCut
+        >> c.deviation >> c.released >> c.releasedMoment
+        >> c.surfacePoint >> c.stencilStart >> c.stencilCell;
+    return is;
+}
+
+} // End namespace Foam
+
+
+// * * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * //
+
+Foam::List<Foam::List<Foam::bodyExchange::contribution>>
+Foam::bodyExchange::toSolvers
+(
+    const UList<DynamicList<contribution>>& outgoing,
+    scalar& commSeconds
+)
+{
+    const label nProcs = Pstream::nProcs();
+    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
+    for (label q = 0; q < nProcs; ++q)
+    {
+        // One by one: a List of them would be checked for equal elements,
+        // which contributions do not compare
+        UOPstream os(q, buffers);
+        os << outgoing[q].size();
+        for (const contribution& con : outgoing[q])
+        {
+            os << con;
+        }
+    }
+    clockTime clock;
+    buffers.finishedSends();
+    commSeconds += clock.timeIncrement();
+
+    List<List<contribution>> incoming(nProcs);
+    for (label r = 0; r < nProcs; ++r)
+    {
+        UIPstream is(r, buffers);
+        label size = 0;
+        is >> size;
+        incoming[r].setSize(size);
+        for (contribution& con : incoming[r])
+        {
+            is >> con;
+        }
+    }
+    return incoming;
+}
+
+
+void Foam::bodyExchange::toOwners
+(
+    const UList<List<vectorField>>& forces,
+    const UList<List<vectorField>>& deviations,
+    List<List<vectorField>>& back,
+    List<List<vectorField>>& backDev,
+    scalar& commSeconds
+)
+{
+    const label nProcs = Pstream::nProcs();
+    clockTime clock;
+    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
+    for (label r = 0; r < nProcs; ++r)
+    {
+        UOPstream os(r, buffers);
+        os << forces[r] << deviations[r];
+    }
+    buffers.finishedSends();
+    commSeconds += clock.timeIncrement();
+
+    back.setSize(nProcs);
+    backDev.setSize(nProcs);
+    for (label q = 0; q < nProcs; ++q)
+    {
+        UIPstream is(q, buffers);
+        is >> back[q] >> backDev[q];
+    }
+}
+
+
+void Foam::bodyExchange::gatherResults
+(
+    List<result>& results,
+    scalar& commSeconds
+)
+{
+    clockTime clock;
+    constexpr label nValues = 17;
+    scalarList values(nValues*results.size(), Zero);
+    forAll(results, b)
+    {
+        const result& r = results[b];
+        scalar* v = &values[nValues*b];
+        for (direction d = 0; d < vector::nComponents; ++d)
+        {
+            v[d] = r.dV[d];
+            v[3 + d] = r.dOmega[d];
+            v[6 + d] = r.sumLambda[d];
+            v[9 + d] = r.sumMoment[d];
+        }
+        v[12] = r.nInterior;
+        v[13] = r.nSurface;
+        v[14] = r.nSurfaceDropped;
+        v[15] = r.iterations;
+        v[16] = r.constraintError;
+    }
+    Pstream::listCombineGather(values, plusEqOp<scalar>());
+    if (Pstream::master())
+    {
+        forAll(results, b)
+        {
+            result& r = results[b];
+            const scalar* v = &values[nValues*b];
+            for (direction d = 0; d < vector::nComponents; ++d)
+            {
+                r.dV[d] = v[d];
+                r.dOmega[d] = v[3 + d];
+                r.sumLambda[d] = v[6 + d];
+                r.sumMoment[d] = v[9 + d];
+            }
+            r.nInterior = label(v[12]);
+            r.nSurface = label(v[13]);
+            r.nSurfaceDropped = label(v[14]);
+            r.iterations = label(v[15]);
+            r.constraintError = v[16];
+        }
+    }
+    commSeconds += clock.elapsedTime();
+}
+
+
+// ************************************************************************* //
