@@ -88,6 +88,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "fictitiousDomain.H"
+#include "pointBins.H"
 #include "particleGeometry.H"
 #include "rigidMomentumBalance.H"
 #include "fictitiousDomainParts.H"
@@ -264,6 +265,16 @@ void Foam::fictitiousDomain::solveGhostBody
     const point& X = B.centre;
     const scalar R2 = sqr(ghostFitRadius_*h);
 
+    // The data and cut cells in bins of a third of the fit radius: a fit,
+    // or a ghost cell's links (1.1 cells), looks at the cells of the bins
+    // its ball's box meets instead of every cell; the cells it keeps are
+    // sorted, so that its sums run in the order of the cells as before,
+    // bit for bit
+    const scalar fitRadius = ghostFitRadius_*h;
+    const pointBins dataBins(xData, fitRadius/3);
+    const pointBins cutBins(xCut, fitRadius/3);
+    DynamicList<label> near;
+
     // The fit about a surface point p (outward normal n) of the relative
     // velocity w = u - u_r of the data cells at least half a cell out
     // (s = n.(x - p) >= h/2, within R = ghostFitRadius cells of p, weights
@@ -283,16 +294,22 @@ void Foam::fictitiousDomain::solveGhostBody
         cells.clear();
         alpha.clear();
         beta.clear();
+        near.clear();
+        dataBins.forNear(p, fitRadius, [&](const label k)
+        {
+            const vector q = xData[k] - p;
+            if ((n & q) >= 0.5*h && magSqr(q) < R2)
+            {
+                near.append(k);
+            }
+        });
+        std::sort(near.begin(), near.end());
         scalar S2 = 0, S4 = 0;
-        forAll(xData, k)
+        for (const label k : near)
         {
             const vector q = xData[k] - p;
             const scalar sk = n & q;
             const scalar r2 = magSqr(q);
-            if (sk < 0.5*h || r2 >= R2)
-            {
-                continue;
-            }
             const scalar kappa = sqr(1 - r2/R2);
             cells.append(k);
             alpha.append(kappa*sk);
@@ -477,13 +494,23 @@ void Foam::fictitiousDomain::solveGhostBody
             linkSum += sx*(2*b*sqr(max(sFace, scalar(0))) - b*sqr(sx));
             linkWeight += sx;
         };
-        for (const point& x : xData)
+        // The data cells, then the cut cells, each in their order
+        for (const pointBins* bins : {&dataBins, &cutBins})
         {
-            addLink(x);
-        }
-        for (const point& x : xCut)
-        {
-            addLink(x);
+            const UList<point>& xs = bins == &dataBins ? xData : xCut;
+            near.clear();
+            bins->forNear(xIn[c], 1.1*h, [&](const label k)
+            {
+                if (magSqr(xs[k] - xIn[c]) <= link2)
+                {
+                    near.append(k);
+                }
+            });
+            std::sort(near.begin(), near.end());
+            for (const label k : near)
+            {
+                addLink(xs[k]);
+            }
         }
         const scalar wn = linkSum/max(linkWeight, 0.5*h);
         // The profile carried through the wall: in the cell's velocity

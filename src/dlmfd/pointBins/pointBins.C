@@ -1,0 +1,82 @@
+/*---------------------------------------------------------------------------*\
+  dlmfdFoam: DLM/FD particle-resolved simulation of particulate flows
+-------------------------------------------------------------------------------
+License
+    This file is part of dlmfdFoam, an extension of OpenFOAM.
+
+    dlmfdFoam is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by the
+    Free Software Foundation, either version 3 of the License, or (at your
+    option) any later version. See <http://www.gnu.org/licenses/>.
+\*---------------------------------------------------------------------------*/
+
+#include "pointBins.H"
+#include "error.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::pointBins::pointBins()
+:
+    origin_(Zero),
+    width_(1),
+    nBins_(1, 1, 1),
+    binStart_(2, label(0)),
+    binPoints_()
+{}
+
+
+Foam::pointBins::pointBins(const UList<point>& x, const scalar width)
+:
+    origin_(Zero),
+    width_(width),
+    nBins_(1, 1, 1),
+    binStart_(),
+    binPoints_()
+{
+    if (!(width > 0))
+    {
+        FatalErrorInFunction
+            << "bin width " << width << " is not allowed; it must be > 0"
+            << exit(FatalError);
+    }
+    if (x.empty())
+    {
+        binStart_.setSize(2, label(0));
+        return;
+    }
+    point lo(x[0]), hi(x[0]);
+    for (const point& p : x)
+    {
+        lo = min(lo, p);
+        hi = max(hi, p);
+    }
+    origin_ = lo;
+    for (direction d = 0; d < 3; ++d)
+    {
+        nBins_[d] = label(std::floor((hi[d] - lo[d])/width_)) + 1;
+    }
+    const label nAll = nBins_.x()*nBins_.y()*nBins_.z();
+    labelList binOf(x.size());
+    binStart_.setSize(nAll + 1, label(0));
+    forAll(x, k)
+    {
+        binOf[k] =
+            (binAlong(x[k], 0)*nBins_.y() + binAlong(x[k], 1))*nBins_.z()
+          + binAlong(x[k], 2);
+        ++binStart_[binOf[k] + 1];
+    }
+    for (label b = 0; b < nAll; ++b)
+    {
+        binStart_[b + 1] += binStart_[b];
+    }
+    // Filled in ascending order of k, so ascending within each bin
+    labelList next(SubList<label>(binStart_, nAll));
+    binPoints_.setSize(x.size());
+    forAll(x, k)
+    {
+        binPoints_[next[binOf[k]]++] = k;
+    }
+}
+
+
+// ************************************************************************* //
