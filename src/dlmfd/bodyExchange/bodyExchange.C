@@ -54,6 +54,14 @@ Foam::bodyExchange::toSolvers
 )
 {
     const label nProcs = Pstream::nProcs();
+    if (!Pstream::parRun())
+    {
+        // Serial: the rank's own contributions, without the round trip
+        // through the buffers (binary, so the values are the same)
+        List<List<contribution>> incoming(1);
+        incoming[0] = outgoing[0];
+        return incoming;
+    }
     PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
     for (label q = 0; q < nProcs; ++q)
     {
@@ -96,6 +104,12 @@ void Foam::bodyExchange::toOwners
 )
 {
     const label nProcs = Pstream::nProcs();
+    if (!Pstream::parRun())
+    {
+        back = List<List<vectorField>>(1, forces[0]);
+        backDev = List<List<vectorField>>(1, deviations[0]);
+        return;
+    }
     clockTime clock;
     PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
     for (label r = 0; r < nProcs; ++r)
