@@ -12,7 +12,8 @@ Description
     The bins of a body's cells (Foam::pointBins): for query points inside,
     on the edge of and outside the points' box, the candidates forNear
     visits hold every point within the query radius (larger than a bin),
-    each once; an empty set visits nothing; a bin width of zero is
+    each once; the box of a ball's cap (the fits' half-ball) holds every
+    point of the cap and is smaller than the ball's; an empty set visits nothing; a bin width of zero is
     refused.
 
 \*---------------------------------------------------------------------------*/
@@ -70,6 +71,48 @@ TEST(pointBins, nearPointsAreAllVisitedOnce)
             }
         }
     }
+}
+
+
+TEST(pointBins, capBoxHoldsTheCapOfTheBallAndIsSmallerThanTheBall)
+{
+    Random rnd(22);
+    const scalar r = 2.5, c = 0.5;
+    for (label trial = 0; trial < 50; ++trial)
+    {
+        vector n = rnd.sample01<vector>() - vector::uniform(0.5);
+        n /= mag(n);
+        const point p = rnd.sample01<vector>();
+        point lo, hi;
+        pointBins::capBox(p, r, n, c, lo, hi);
+        scalar volume = 1;
+        for (direction d = 0; d < 3; ++d)
+        {
+            volume *= hi[d] - lo[d];
+        }
+        EXPECT_LT(volume, pow3(2*r)) << "trial " << trial;
+        for (label k = 0; k < 2000; ++k)
+        {
+            const vector q = 2*r*(rnd.sample01<vector>() - vector::uniform(0.5));
+            if (magSqr(q) >= sqr(r) || (n & q) < c)
+            {
+                continue;
+            }
+            const point x = p + q;
+            for (direction d = 0; d < 3; ++d)
+            {
+                EXPECT_GE(x[d], lo[d]) << "trial " << trial;
+                EXPECT_LE(x[d], hi[d]) << "trial " << trial;
+            }
+        }
+    }
+    // n along x: the cap runs from c to r along x, and across it as far
+    // as the circle where the plane cuts the sphere
+    point lo, hi;
+    pointBins::capBox(point::zero, r, vector(1, 0, 0), c, lo, hi);
+    EXPECT_NEAR(lo.x(), c, 1e-6);
+    EXPECT_NEAR(hi.x(), r, 1e-6);
+    EXPECT_NEAR(hi.y(), std::sqrt(sqr(r) - sqr(c)), 1e-6);
 }
 
 

@@ -295,7 +295,9 @@ void Foam::fictitiousDomain::solveGhostBody
         alpha.clear();
         beta.clear();
         near.clear();
-        dataBins.forNear(p, fitRadius, [&](const label k)
+        point lo, hi;
+        pointBins::capBox(p, fitRadius, n, 0.5*h, lo, hi);
+        dataBins.forInBox(lo, hi, [&](const label k)
         {
             const vector q = xData[k] - p;
             if ((n & q) >= 0.5*h && magSqr(q) < R2)

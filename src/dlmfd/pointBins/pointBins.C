@@ -79,4 +79,32 @@ Foam::pointBins::pointBins(const UList<point>& x, const scalar width)
 }
 
 
+// * * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * //
+
+void Foam::pointBins::capBox
+(
+    const point& p,
+    const scalar r,
+    const vector& n,
+    const scalar c,
+    point& lo,
+    point& hi
+)
+{
+    // Along each axis the cap reaches r where the ball's extreme point lies
+    // on its side of the plane, else as far as the circle where the plane
+    // cuts the sphere, c n_d +- sqrt(r^2 - c^2) sqrt(1 - n_d^2)
+    const scalar rc = std::sqrt(max(sqr(r) - sqr(c), scalar(0)));
+    const scalar margin = 1e-9*r;
+    for (direction d = 0; d < 3; ++d)
+    {
+        const scalar across = rc*std::sqrt(max(1 - sqr(n[d]), scalar(0)));
+        const scalar up = n[d]*r >= c ? r : c*n[d] + across;
+        const scalar down = -n[d]*r >= c ? -r : c*n[d] - across;
+        lo[d] = p[d] + down - margin;
+        hi[d] = p[d] + up + margin;
+    }
+}
+
+
 // ************************************************************************* //
