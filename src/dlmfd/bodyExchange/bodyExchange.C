@@ -62,9 +62,15 @@ Foam::bodyExchange::toSolvers
         incoming[0] = outgoing[0];
         return incoming;
     }
+    // Nothing is written for a rank that gets no contribution: its buffer
+    // stays empty and no message goes to it
     PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
     for (label q = 0; q < nProcs; ++q)
     {
+        if (outgoing[q].empty())
+        {
+            continue;
+        }
         // One by one: a List of them would be checked for equal elements,
         // which contributions do not compare
         UOPstream os(q, buffers);
@@ -75,12 +81,17 @@ Foam::bodyExchange::toSolvers
         }
     }
     clockTime clock;
-    buffers.finishedSends();
+    labelList recvSizes;
+    buffers.finishedSends(recvSizes);
     commSeconds += clock.timeIncrement();
 
     List<List<contribution>> incoming(nProcs);
     for (label r = 0; r < nProcs; ++r)
     {
+        if (recvSizes[r] == 0)
+        {
+            continue;
+        }
         UIPstream is(r, buffers);
         label size = 0;
         is >> size;
@@ -111,19 +122,31 @@ void Foam::bodyExchange::toOwners
         return;
     }
     clockTime clock;
+    // Back only to the ranks that sent something
     PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
     for (label r = 0; r < nProcs; ++r)
     {
+        if (forces[r].empty())
+        {
+            continue;
+        }
         UOPstream os(r, buffers);
         os << forces[r] << deviations[r];
     }
-    buffers.finishedSends();
+    labelList recvSizes;
+    buffers.finishedSends(recvSizes);
     commSeconds += clock.timeIncrement();
 
     back.setSize(nProcs);
     backDev.setSize(nProcs);
     for (label q = 0; q < nProcs; ++q)
     {
+        back[q].clear();
+        backDev[q].clear();
+        if (recvSizes[q] == 0)
+        {
+            continue;
+        }
         UIPstream is(q, buffers);
         is >> back[q] >> backDev[q];
     }

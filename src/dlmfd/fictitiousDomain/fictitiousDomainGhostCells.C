@@ -93,6 +93,8 @@ Description
 #include "rigidMomentumBalance.H"
 #include "fictitiousDomainParts.H"
 
+#include <algorithm>
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::fictitiousDomain::findGhostCandidates
@@ -263,14 +265,15 @@ void Foam::fictitiousDomain::solveGhostBody
     }
     const label nIn = xIn.size();
     const point& X = B.centre;
-    const scalar R2 = sqr(ghostFitRadius_*h);
-
-    // The data and cut cells in bins of a third of the fit radius: a fit,
-    // or a ghost cell's links (1.1 cells), looks at the cells of the bins
-    // its ball's box meets instead of every cell; the cells it keeps are
-    // sorted, so that its sums run in the order of the cells as before,
-    // bit for bit
     const scalar fitRadius = ghostFitRadius_*h;
+    const scalar R2 = sqr(fitRadius);
+
+    // The data and cut cells in bins of a third of the fit radius: a fit
+    // looks at the cells of the bins that the box of its half-ball (the
+    // fluid side of its surface point) meets, a ghost cell's links (1.1
+    // cells) at those of its ball's box, instead of every cell; the cells
+    // kept are sorted, so that the sums run in the order of the cells as
+    // before, bit for bit
     const pointBins dataBins(xData, fitRadius/3);
     const pointBins cutBins(xCut, fitRadius/3);
     DynamicList<label> near;
