@@ -49,17 +49,17 @@ Istream& operator>>(Istream& is, fictitiousDomain::contribution& c)
 Foam::List<Foam::List<Foam::bodyExchange::contribution>>
 Foam::bodyExchange::toSolvers
 (
-    const UList<DynamicList<contribution>>& outgoing,
+    UList<DynamicList<contribution>>& outgoing,
     scalar& commSeconds
 )
 {
     const label nProcs = Pstream::nProcs();
     if (!Pstream::parRun())
     {
-        // Serial: the rank's own contributions, without the round trip
-        // through the buffers (binary, so the values are the same)
+        // Serial: the rank's own contributions, moved, without the round
+        // trip through the buffers (binary, so the values are the same)
         List<List<contribution>> incoming(1);
-        incoming[0] = outgoing[0];
+        incoming[0].transfer(outgoing[0]);
         return incoming;
     }
     // Nothing is written for a rank that gets no contribution: its buffer
@@ -107,8 +107,8 @@ Foam::bodyExchange::toSolvers
 
 void Foam::bodyExchange::toOwners
 (
-    const UList<List<vectorField>>& forces,
-    const UList<List<vectorField>>& deviations,
+    UList<List<vectorField>>& forces,
+    UList<List<vectorField>>& deviations,
     List<List<vectorField>>& back,
     List<List<vectorField>>& backDev,
     scalar& commSeconds
@@ -117,8 +117,10 @@ void Foam::bodyExchange::toOwners
     const label nProcs = Pstream::nProcs();
     if (!Pstream::parRun())
     {
-        back = List<List<vectorField>>(1, forces[0]);
-        backDev = List<List<vectorField>>(1, deviations[0]);
+        back.setSize(1);
+        backDev.setSize(1);
+        back[0].transfer(forces[0]);
+        backDev[0].transfer(deviations[0]);
         return;
     }
     clockTime clock;

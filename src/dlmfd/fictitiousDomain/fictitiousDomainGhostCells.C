@@ -499,12 +499,11 @@ void Foam::fictitiousDomain::solveGhostBody
             linkSum += sx*(2*b*sqr(max(sFace, scalar(0))) - b*sqr(sx));
             linkWeight += sx;
         };
-        // The data cells, then the cut cells, each in their order
-        for (const pointBins* bins : {&dataBins, &cutBins})
+        // The cells of a set within link reach, in their order
+        const auto addLinks = [&](const pointBins& bins, const UList<point>& xs)
         {
-            const UList<point>& xs = bins == &dataBins ? xData : xCut;
             near.clear();
-            bins->forNear(xIn[c], 1.1*h, [&](const label k)
+            bins.forNear(xIn[c], 1.1*h, [&](const label k)
             {
                 if (magSqr(xs[k] - xIn[c]) <= link2)
                 {
@@ -516,7 +515,9 @@ void Foam::fictitiousDomain::solveGhostBody
             {
                 addLink(xs[k]);
             }
-        }
+        };
+        addLinks(dataBins, xData);
+        addLinks(cutBins, xCut);
         const scalar wn = linkSum/max(linkWeight, 0.5*h);
         // The profile carried through the wall: in the cell's velocity
         // (mirrored) or in the viscous fluxes to its fluid neighbours

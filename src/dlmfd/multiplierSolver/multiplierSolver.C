@@ -29,7 +29,7 @@ Foam::multiplierSolver::multiplierSolver
 {}
 
 
-// * * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * //
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::multiplierSolver::applyA
 (
@@ -84,7 +84,6 @@ Foam::scalarField Foam::multiplierSolver::inverseDiagonal
 }
 
 
-// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 // To |r| <= tolerance max(|b|, normFloor): the floor keeps a right-hand side
 // of round-off size (a fluid already moving with the body) from being
