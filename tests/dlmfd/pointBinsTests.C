@@ -13,8 +13,10 @@ Description
     on the edge of and outside the points' box, the candidates forNear
     visits hold every point within the query radius (larger than a bin),
     each once; the box of a ball's cap (the fits' half-ball) holds every
-    point of the cap and is smaller than the ball's; an empty set visits nothing; a bin width of zero is
-    refused.
+    point of the cap and is smaller than the ball's; bins of a given grid
+    with unequal widths find the same points as a brute-force search; an
+    empty set visits nothing; a bin width of zero and a point outside a
+    given grid are refused.
 
 \*---------------------------------------------------------------------------*/
 
@@ -113,6 +115,67 @@ TEST(pointBins, capBoxHoldsTheCapOfTheBallAndIsSmallerThanTheBall)
     EXPECT_NEAR(lo.x(), c, 1e-6);
     EXPECT_NEAR(hi.x(), r, 1e-6);
     EXPECT_NEAR(hi.y(), std::sqrt(sqr(r) - sqr(c)), 1e-6);
+}
+
+
+TEST(pointBins, givenGridWithUnequalWidthsFindsEveryPointInABox)
+{
+    Random rnd(7);
+    const point origin(-1, 0, 2);
+    const vector width(0.4, 0.25, 0.7);
+    const labelVector nBins(5, 8, 3);
+    List<point> x(600);
+    for (point& p : x)
+    {
+        p = origin + cmptMultiply(rnd.sample01<vector>(), vector(2, 2, 2.1));
+    }
+    const pointBins bins(x, origin, width, nBins);
+    for (label q = 0; q < 100; ++q)
+    {
+        const point lo = origin + cmptMultiply
+        (
+            rnd.sample01<vector>() - vector::uniform(0.3),
+            vector(2, 2, 2.1)
+        );
+        const point hi = lo + 0.6*rnd.sample01<vector>();
+        DynamicList<label> found;
+        bins.forInBox(lo, hi, [&](const label k)
+        {
+            const point& p = x[k];
+            if
+            (
+                p.x() >= lo.x() && p.y() >= lo.y() && p.z() >= lo.z()
+             && p.x() <= hi.x() && p.y() <= hi.y() && p.z() <= hi.z()
+            )
+            {
+                found.append(k);
+            }
+        });
+        labelList sorted(found);
+        std::sort(sorted.begin(), sorted.end());
+        DynamicList<label> expected;
+        forAll(x, k)
+        {
+            const point& p = x[k];
+            if
+            (
+                p.x() >= lo.x() && p.y() >= lo.y() && p.z() >= lo.z()
+             && p.x() <= hi.x() && p.y() <= hi.y() && p.z() <= hi.z()
+            )
+            {
+                expected.append(k);
+            }
+        }
+        EXPECT_EQ(sorted, labelList(expected)) << "box " << q;
+    }
+
+    const std::string e = testInput::errorOf([&]
+    {
+        List<point> outside(x);
+        outside.append(point(5, 0.5, 2.5));
+        pointBins bad(outside, origin, width, nBins);
+    });
+    EXPECT_NE(e.find("lies outside the bins' box"), std::string::npos) << e;
 }
 
 

@@ -20,9 +20,7 @@ Foam::cellCentreSearch::cellCentreSearch(const polyMesh& mesh)
 :
     centres_(mesh.cellCentres()),
     bounds_(),
-    origin_(Zero),
-    width_(Zero),
-    nBins_(Zero)
+    bins_()
 {
     const label n = centres_.size();
     boundBox bb(centres_, false);
@@ -32,50 +30,18 @@ Foam::cellCentreSearch::cellCentreSearch(const polyMesh& mesh)
     }
     bb.inflate(1e-6);
     bounds_ = bb;
-    origin_ = bb.min();
 
     // Bins about two cells wide along each direction that has extent
     const scalar meanCell = n ? std::cbrt(bb.volume()/n) : 1;
+    labelVector nBins;
+    vector width;
     for (direction d = 0; d < 3; ++d)
     {
         const scalar span = bb.span()[d];
-        nBins_[d] = max(label(1), label(span/(2*meanCell)));
-        width_[d] = span/nBins_[d];
+        nBins[d] = max(label(1), label(span/(2*meanCell)));
+        width[d] = span/nBins[d];
     }
-
-    const label nTotal = cmptProduct(nBins_);
-    binStart_.setSize(nTotal + 1, 0);
-    labelList binOfCell(n);
-    forAll(centres_, c)
-    {
-        const labelVector b = binOf(centres_[c]);
-        binOfCell[c] = b.x() + nBins_.x()*(b.y() + nBins_.y()*b.z());
-        ++binStart_[binOfCell[c] + 1];
-    }
-    for (label b = 0; b < nTotal; ++b)
-    {
-        binStart_[b + 1] += binStart_[b];
-    }
-    binCells_.setSize(n);
-    labelList fill(SubList<label>(binStart_, nTotal));
-    forAll(centres_, c)
-    {
-        binCells_[fill[binOfCell[c]]++] = c;
-    }
-}
-
-
-// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-Foam::labelVector Foam::cellCentreSearch::binOf(const point& p) const
-{
-    labelVector b;
-    for (direction d = 0; d < 3; ++d)
-    {
-        const label k = label(std::floor((p[d] - origin_[d])/width_[d]));
-        b[d] = max(label(0), min(nBins_[d] - 1, k));
-    }
-    return b;
+    bins_ = pointBins(centres_, bb.min(), width, nBins);
 }
 
 
@@ -92,27 +58,19 @@ void Foam::cellCentreSearch::cellsInBall
     {
         return;
     }
-    const labelVector lo = binOf(x - vector::uniform(r));
-    const labelVector hi = binOf(x + vector::uniform(r));
     const scalar r2 = sqr(r);
-    for (label k = lo.z(); k <= hi.z(); ++k)
-    {
-        for (label j = lo.y(); j <= hi.y(); ++j)
+    bins_.forInBox
+    (
+        x - vector::uniform(r),
+        x + vector::uniform(r),
+        [&](const label c)
         {
-            for (label i = lo.x(); i <= hi.x(); ++i)
+            if (magSqr(centres_[c] - x) <= r2)
             {
-                const label b = i + nBins_.x()*(j + nBins_.y()*k);
-                for (label m = binStart_[b]; m < binStart_[b + 1]; ++m)
-                {
-                    const label c = binCells_[m];
-                    if (magSqr(centres_[c] - x) <= r2)
-                    {
-                        cells.append(c);
-                    }
-                }
+                cells.append(c);
             }
         }
-    }
+    );
 }
 
 

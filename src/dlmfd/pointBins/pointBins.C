@@ -18,7 +18,7 @@ License
 Foam::pointBins::pointBins()
 :
     origin_(Zero),
-    width_(1),
+    width_(vector::one),
     nBins_(1, 1, 1),
     binStart_(2, label(0)),
     binPoints_()
@@ -28,7 +28,7 @@ Foam::pointBins::pointBins()
 Foam::pointBins::pointBins(const UList<point>& x, const scalar width)
 :
     origin_(Zero),
-    width_(width),
+    width_(vector::uniform(width)),
     nBins_(1, 1, 1),
     binStart_(),
     binPoints_()
@@ -53,16 +53,70 @@ Foam::pointBins::pointBins(const UList<point>& x, const scalar width)
     origin_ = lo;
     for (direction d = 0; d < 3; ++d)
     {
-        nBins_[d] = label(std::floor((hi[d] - lo[d])/width_)) + 1;
+        nBins_[d] = label(std::floor((hi[d] - lo[d])/width_[d])) + 1;
     }
+    fill(x);
+}
+
+
+Foam::pointBins::pointBins
+(
+    const UList<point>& x,
+    const point& origin,
+    const vector& width,
+    const labelVector& nBins
+)
+:
+    origin_(origin),
+    width_(width),
+    nBins_(nBins),
+    binStart_(),
+    binPoints_()
+{
+    // forInBox skips a box wholly outside the grid: every point must be in
+    // it, or such a box would miss the points clamped into the edge bins
+    for (direction d = 0; d < 3; ++d)
+    {
+        if (!(width_[d] > 0) || nBins_[d] < 1)
+        {
+            FatalErrorInFunction
+                << "bin width " << width_[d] << " and count " << nBins_[d]
+                << " along direction " << label(d) << " are not allowed;"
+                << " the width must be > 0 and the count >= 1"
+                << exit(FatalError);
+        }
+    }
+    const point top = origin_ + cmptMultiply(width_, vector(nBins_));
+    forAll(x, k)
+    {
+        for (direction d = 0; d < 3; ++d)
+        {
+            if (x[k][d] < origin_[d] || x[k][d] > top[d])
+            {
+                FatalErrorInFunction
+                    << "point " << k << " " << x[k] << " lies outside the"
+                    << " bins' box " << origin_ << " " << top
+                    << exit(FatalError);
+            }
+        }
+    }
+    fill(x);
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::pointBins::fill(const UList<point>& x)
+{
     const label nAll = nBins_.x()*nBins_.y()*nBins_.z();
     labelList binOf(x.size());
     binStart_.setSize(nAll + 1, label(0));
+    binStart_ = 0;
     forAll(x, k)
     {
         binOf[k] =
-            (binAlong(x[k], 0)*nBins_.y() + binAlong(x[k], 1))*nBins_.z()
-          + binAlong(x[k], 2);
+            binAlong(x[k], 0)
+          + nBins_.x()*(binAlong(x[k], 1) + nBins_.y()*binAlong(x[k], 2));
         ++binStart_[binOf[k] + 1];
     }
     for (label b = 0; b < nAll; ++b)
