@@ -196,6 +196,10 @@ int main(int argc, char *argv[])
             outputSeconds + seriesSeconds
         })
     ).c_str() << nl << endl;
+    if (particles.valid())
+    {
+        particles->reportExchange();
+    }
 
     Info<< "End\n" << endl;
 

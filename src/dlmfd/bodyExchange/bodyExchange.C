@@ -50,7 +50,8 @@ Foam::List<Foam::List<Foam::bodyExchange::contribution>>
 Foam::bodyExchange::toSolvers
 (
     UList<DynamicList<contribution>>& outgoing,
-    scalar& commSeconds
+    scalar& commSeconds,
+    exchangeTraffic& received
 )
 {
     const label nProcs = Pstream::nProcs();
@@ -83,6 +84,7 @@ Foam::bodyExchange::toSolvers
     clockTime clock;
     labelList recvSizes;
     buffers.finishedSends(recvSizes);
+    received.add(recvSizes, Pstream::myProcNo());
     commSeconds += clock.timeIncrement();
 
     List<List<contribution>> incoming(nProcs);
@@ -111,7 +113,8 @@ void Foam::bodyExchange::toOwners
     UList<List<vectorField>>& deviations,
     List<List<vectorField>>& back,
     List<List<vectorField>>& backDev,
-    scalar& commSeconds
+    scalar& commSeconds,
+    exchangeTraffic& received
 )
 {
     const label nProcs = Pstream::nProcs();
@@ -137,6 +140,7 @@ void Foam::bodyExchange::toOwners
     }
     labelList recvSizes;
     buffers.finishedSends(recvSizes);
+    received.add(recvSizes, Pstream::myProcNo());
     commSeconds += clock.timeIncrement();
 
     back.setSize(nProcs);
@@ -155,51 +159,113 @@ void Foam::bodyExchange::toOwners
 }
 
 
-void Foam::bodyExchange::gatherResults
+Foam::labelList Foam::bodyExchange::solvingRanks
 (
-    List<result>& results,
+    const labelUList& nHere,
     scalar& commSeconds
 )
 {
+    const label nProcs = Pstream::nProcs();
+    const label me = Pstream::myProcNo();
+    // One maximum per body over the ranks: the share first, then the
+    // lower rank (nProcs - 1 - rank larger); exact in a double up to
+    // 2^53 / nProcs cells
+    scalarList key(nHere.size(), scalar(-1));
+    forAll(nHere, b)
+    {
+        if (nHere[b] > 0)
+        {
+            key[b] = scalar(nHere[b])*nProcs + (nProcs - 1 - me);
+        }
+    }
+    if (Pstream::parRun())
+    {
+        clockTime clock;
+        reduce(key, maxOp<scalarList>());
+        commSeconds += clock.elapsedTime();
+    }
+    labelList solver(nHere.size(), -1);
+    forAll(key, b)
+    {
+        if (key[b] >= 0)
+        {
+            solver[b] = nProcs - 1 - label(std::fmod(key[b], nProcs));
+        }
+    }
+    return solver;
+}
+
+
+void Foam::bodyExchange::gatherResults
+(
+    const labelUList& solved,
+    List<result>& results,
+    scalar& commSeconds,
+    exchangeTraffic& received
+)
+{
+    if (!Pstream::parRun())
+    {
+        return;
+    }
     clockTime clock;
     constexpr label nValues = 17;
-    scalarList values(nValues*results.size(), Zero);
-    forAll(results, b)
+    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
+    if (!Pstream::master() && solved.size())
     {
-        const result& r = results[b];
-        scalar* v = &values[nValues*b];
-        for (direction d = 0; d < vector::nComponents; ++d)
+        scalarList values(nValues*solved.size());
+        forAll(solved, k)
         {
-            v[d] = r.dV[d];
-            v[3 + d] = r.dOmega[d];
-            v[6 + d] = r.sumLambda[d];
-            v[9 + d] = r.sumMoment[d];
-        }
-        v[12] = r.nInterior;
-        v[13] = r.nSurface;
-        v[14] = r.nSurfaceDropped;
-        v[15] = r.iterations;
-        v[16] = r.constraintError;
-    }
-    Pstream::listCombineGather(values, plusEqOp<scalar>());
-    if (Pstream::master())
-    {
-        forAll(results, b)
-        {
-            result& r = results[b];
-            const scalar* v = &values[nValues*b];
+            const result& r = results[solved[k]];
+            scalar* v = &values[nValues*k];
             for (direction d = 0; d < vector::nComponents; ++d)
             {
-                r.dV[d] = v[d];
-                r.dOmega[d] = v[3 + d];
-                r.sumLambda[d] = v[6 + d];
-                r.sumMoment[d] = v[9 + d];
+                v[d] = r.dV[d];
+                v[3 + d] = r.dOmega[d];
+                v[6 + d] = r.sumLambda[d];
+                v[9 + d] = r.sumMoment[d];
             }
-            r.nInterior = label(v[12]);
-            r.nSurface = label(v[13]);
-            r.nSurfaceDropped = label(v[14]);
-            r.iterations = label(v[15]);
-            r.constraintError = v[16];
+            v[12] = r.nInterior;
+            v[13] = r.nSurface;
+            v[14] = r.nSurfaceDropped;
+            v[15] = r.iterations;
+            v[16] = r.constraintError;
+        }
+        UOPstream os(Pstream::masterNo(), buffers);
+        os << labelList(solved) << values;
+    }
+    labelList recvSizes;
+    buffers.finishedSends(recvSizes);
+    received.add(recvSizes, Pstream::myProcNo());
+    if (Pstream::master())
+    {
+        for (label q = 1; q < Pstream::nProcs(); ++q)
+        {
+            if (recvSizes[q] == 0)
+            {
+                continue;
+            }
+            UIPstream is(q, buffers);
+            labelList bodies;
+            scalarList values;
+            is >> bodies >> values;
+            forAll(bodies, k)
+            {
+                result& r = results[bodies[k]];
+                const scalar* v = &values[nValues*k];
+                for (direction d = 0; d < vector::nComponents; ++d)
+                {
+                    r.dV[d] = v[d];
+                    r.dOmega[d] = v[3 + d];
+                    r.sumLambda[d] = v[6 + d];
+                    r.sumMoment[d] = v[9 + d];
+                }
+                r.nInterior = label(v[12]);
+                r.nSurface = label(v[13]);
+                r.nSurfaceDropped = label(v[14]);
+                r.iterations = label(v[15]);
+                r.constraintError = v[16];
+            }
         }
     }
     commSeconds += clock.elapsedTime();

@@ -437,4 +437,31 @@ void Foam::dlmfdCoupling::write()
 }
 
 
+void Foam::dlmfdCoupling::reportExchange() const
+{
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+    const scalar nSolves = max(fd_.nSolves(), label(1));
+    const scalar nProcs = Pstream::nProcs();
+    const exchangeTraffic& t = fd_.received();
+    Info<< "DLM/FD work and exchange per solve (" << fd_.nSolves()
+        << " solves), by a rank: largest, mean over the ranks" << nl;
+    const auto line = [&](const char* what, const scalar total)
+    {
+        const scalar perSolve = total/nSolves;
+        Info<< "    " << what << " "
+            << returnReduce(perSolve, maxOp<scalar>()) << ", "
+            << returnReduce(perSolve, sumOp<scalar>())/nProcs << nl;
+    };
+    line("bodies with cells here", t.bodiesHere);
+    line("their cells          ", t.cellsHere);
+    line("bodies solved        ", t.bodiesSolved);
+    line("messages received    ", t.messages);
+    line("bytes received       ", t.bytes);
+    Info<< endl;
+}
+
+
 // ************************************************************************* //

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "fictitiousDomain.H"
+#include "bodyExchange.H"
 #include "fvmDdt.H"
 #include "linear.H"
 #include "hexCellCheck.H"
@@ -180,7 +181,9 @@ Foam::fictitiousDomain::fictitiousDomain
     stepStartOwner_(),
     stepStartIndex_(-1),
     results_(),
-    commSeconds_(0)
+    commSeconds_(0),
+    received_(),
+    nSolves_(0)
 {
     // Before anything is solved or written: a mesh the coupling is not
     // validated on stops here, not by diverging later
@@ -404,7 +407,8 @@ void Foam::fictitiousDomain::setPeriodicity(const vector& period)
 
 Foam::scalarList Foam::fictitiousDomain::cellSizes
 (
-    const UList<body>& bodies
+    const UList<body>& bodies,
+    labelList& nHere
 ) const
 {
     // The mean volume of the cells within each body's bounding radius,
@@ -434,6 +438,11 @@ Foam::scalarList Foam::fictitiousDomain::cellSizes
             }
             count[b] += near.size();
         }
+    }
+    nHere.setSize(bodies.size());
+    forAll(count, b)
+    {
+        nHere[b] = label(count[b]);
     }
     clockTime clock;
     reduce(sumV, sumOp<scalarField>());
@@ -503,7 +512,9 @@ void Foam::fictitiousDomain::startCandidates
     owners_.reset();
 
     const label n = bodies.size();
-    cand.h = cellSizes(bodies);
+    labelList nHere;
+    cand.h = cellSizes(bodies, nHere);
+    cand.solver = bodyExchange::solvingRanks(nHere, commSeconds_);
     cand.shifts.setSize(n);
     cand.interior.setSize(n);
     cand.interiorShift.setSize(n);

@@ -161,7 +161,6 @@ Foam::fictitiousDomain::solve
 {
     const label nProcs = Pstream::nProcs();
     const label me = Pstream::myProcNo();
-    const auto solverOf = [&](const label b) { return b % nProcs; };
 
     // The fluid without the previous multipliers' force: within the outer
     // loop, without S^n and without the share of G - S^n the time scheme
@@ -191,6 +190,7 @@ Foam::fictitiousDomain::solve
     // Every body's candidate points on this rank, and the cells shared out
     candidates cand;
     findCandidates(bodies, cand);
+    const labelList& solverOf = cand.solver;
 
     results_.setSize(bodies.size());
     for (result& r : results_)
@@ -198,7 +198,9 @@ Foam::fictitiousDomain::solve
         r = result();
     }
 
-    // This rank's cells of each body, to the rank that solves it
+    // This rank's cells of each body, to the rank that solves it; the
+    // bodies this rank solved
+    DynamicList<label> solved;
     List<List<labelList>> sentCells(nProcs);
     List<labelList> sentBodies(nProcs);
     {
@@ -228,7 +230,9 @@ Foam::fictitiousDomain::solve
             result& res = results_[b];
             res.interiorCells = SubList<label>(cells, con.nInterior);
             res.interiorCentres = SubList<point>(con.centres, con.nInterior);
-            const label q = solverOf(b);
+            const label q = solverOf[b];
+            received_.bodiesHere += 1;
+            received_.cellsHere += cells.size();
             bodiesTo[q].append(b);
             cellsTo[q].append(std::move(cells));
             outgoing[q].append(std::move(con));
@@ -247,7 +251,7 @@ Foam::fictitiousDomain::solve
         // The bodies this rank solves, from the cells of every rank
         const List<List<contribution>> incoming
         (
-            bodyExchange::toSolvers(outgoing, commSeconds_)
+            bodyExchange::toSolvers(outgoing, commSeconds_, received_)
         );
         List<DynamicList<const contribution*>> partsOf(bodies.size());
         List<DynamicList<labelPair>> whereFrom(bodies.size());
@@ -272,10 +276,11 @@ Foam::fictitiousDomain::solve
         }
         forAll(bodies, b)
         {
-            if (solverOf(b) != me || partsOf[b].empty())
+            if (solverOf[b] != me || partsOf[b].empty())
             {
                 continue;
             }
+            solved.append(b);
             result& res = results_[b];
             vectorField f, dev;
             if (ghost)
@@ -320,7 +325,8 @@ Foam::fictitiousDomain::solve
         List<List<vectorField>> backAll, backDevAll;
         bodyExchange::toOwners
         (
-            forces, deviations, backAll, backDevAll, commSeconds_
+            forces, deviations, backAll, backDevAll, commSeconds_,
+            received_
         );
         vectorField& src = source_.primitiveFieldRef();
         for (label q = 0; q < nProcs; ++q)
@@ -368,7 +374,12 @@ Foam::fictitiousDomain::solve
         G = stepStartSource_ + a*(G - stepStartSource_);
     }
 
-    bodyExchange::gatherResults(results_, commSeconds_);
+    received_.bodiesSolved += solved.size();
+    bodyExchange::gatherResults
+    (
+        solved, results_, commSeconds_, received_
+    );
+    ++nSolves_;
 
     U.correctBoundaryConditions();
     source_.correctBoundaryConditions();
