@@ -21,3 +21,26 @@ def output_folder(here):
     out = os.path.join(os.path.abspath(base), os.path.relpath(here, benchmarks))
     os.makedirs(out, exist_ok=True)
     return out
+
+
+def machine_description(extra=()):
+    """What a benchmark ran on, for its machine file: date, kernel, cores,
+    CPU model, memory, the project's commit, and the given extra lines"""
+    import platform
+    import subprocess
+    import time
+    lines = ["date: " + time.strftime("%Y-%m-%d %H:%M:%S UTC", time.gmtime()),
+             "os: " + platform.platform(),
+             f"cpus: {os.cpu_count()}"]
+    for key, path in (("model name", "/proc/cpuinfo"), ("MemTotal", "/proc/meminfo")):
+        try:
+            found = [l for l in open(path) if l.startswith(key)]
+        except OSError:
+            found = []
+        if found:
+            lines.append(f"{key}: {found[0].split(':', 1)[1].strip()}")
+    commit = subprocess.run(["git", "-C", benchmarks, "rev-parse", "--short", "HEAD"],
+                            capture_output=True, text=True).stdout.strip()
+    lines.append(f"commit: {commit or 'unknown'}")
+    lines.extend(extra)
+    return "\n".join(lines) + "\n"
