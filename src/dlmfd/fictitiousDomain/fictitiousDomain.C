@@ -444,10 +444,17 @@ Foam::scalarList Foam::fictitiousDomain::cellSizes
     {
         nHere[b] = label(count[b]);
     }
+    // One reduction for both sums (element by element, in the same order
+    // as two would)
+    const label n = bodies.size();
+    scalarField both(2*n);
+    SubField<scalar>(both, n) = sumV;
+    SubField<scalar>(both, n, n) = count;
     clockTime clock;
-    reduce(sumV, sumOp<scalarField>());
-    reduce(count, sumOp<scalarField>());
+    reduce(both, sumOp<scalarField>());
     commSeconds_ += clock.elapsedTime();
+    sumV = SubField<scalar>(both, n);
+    count = SubField<scalar>(both, n, n);
 
     scalarList h(bodies.size());
     forAll(bodies, b)
