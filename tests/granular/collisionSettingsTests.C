@@ -94,4 +94,27 @@ TEST(collisionSettings, valuesOutOfRangeAreRefusedNamingThem)
 }
 
 
+TEST(collisionSettings, subCyclingIsAllUnlessInReachIsAsked)
+{
+    EXPECT_FALSE(collisionSettings(testInput::parse(box)).subCycleInReach());
+    EXPECT_FALSE
+    (
+        collisionSettings(testInput::parse("subCycling all; " + box))
+       .subCycleInReach()
+    );
+    EXPECT_TRUE
+    (
+        collisionSettings(testInput::parse("subCycling inReach; " + box))
+       .subCycleInReach()
+    );
+    const std::string e = testInput::errorOf([&]
+    {
+        collisionSettings s(testInput::parse("subCycling near; " + box));
+    });
+    EXPECT_NE(e.find("subCycling near"), std::string::npos) << e;
+    EXPECT_NE(e.find("inReach"), std::string::npos) << e;
+    EXPECT_NE(e.find("all"), std::string::npos) << e;
+}
+
+
 // ************************************************************************* //

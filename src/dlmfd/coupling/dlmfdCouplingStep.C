@@ -268,8 +268,18 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
             << " correctors changed the particle velocities by at most "
             << lastChange << " m/s";
     }
-    Info<< "; granular " << nSub << " sub-steps, "
-        << s.nContacts << " + " << s.nWallContacts << " wall contacts,"
+    Info<< "; granular " << nSub << " sub-steps";
+    if (s.nInReach >= 0)
+    {
+        Info<< " (contacts of " << s.nInReach << " of " << n
+            << " particles in reach)";
+    }
+    if (s.nFallbacks)
+    {
+        Info<< " (redone with every particle's contacts: one in reach"
+            << " travelled farther than allowed)";
+    }
+    Info<< ", " << s.nContacts << " + " << s.nWallContacts << " wall contacts,"
         << " max overlap " << s.maxOverlapRatio << " D" << endl;
 
     if (series_.valid() && mesh_.time().timeIndex() % seriesInterval_ == 0)

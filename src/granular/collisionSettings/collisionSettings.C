@@ -21,7 +21,8 @@ Foam::collisionSettings::collisionSettings()
     overlapLimit_(0.05),
     skin_(-1),
     domain_(),
-    periodic_(false)
+    periodic_(false),
+    subCycleInReach_(false)
 {}
 
 
@@ -55,6 +56,19 @@ Foam::collisionSettings::collisionSettings(const dictionary& collisionDict)
             << "skin = " << skin_ << " is not allowed; it must be >= 0 [m]"
             << exit(FatalIOError);
     }
+
+    const word subCycling =
+        collisionDict.getOrDefault<word>("subCycling", "all");
+    if (subCycling != "all" && subCycling != "inReach")
+    {
+        FatalIOErrorInFunction(collisionDict)
+            << "subCycling " << subCycling << " is not allowed; valid: 2"
+            << nl << "(" << nl << "all" << nl << "inReach" << nl << ")"
+            << nl << "(all: every moving particle takes the sub-steps;"
+            << " inReach: only those that can touch a wall or another"
+            << " particle over the step)" << exit(FatalIOError);
+    }
+    subCycleInReach_ = subCycling == "inReach";
 
     const dictionary& domainDict = collisionDict.subDict("domain");
     knownKeywords::require

@@ -75,8 +75,8 @@ void Foam::granularSystem::readCollision(const dictionary& collisionDict)
         collisionDict,
         wordList
         ({
-            "contactLaw", "subStepsPerContact", "overlapLimit", "skin",
-            "domain", "walls", "wallPatches", "pairs"
+            "contactLaw", "subStepsPerContact", "subCycling",
+            "overlapLimit", "skin", "domain", "walls", "wallPatches", "pairs"
         })
     );
 

@@ -100,12 +100,24 @@ bool Foam::verletList::anyPairWithin
     const scalar search
 )
 {
+    const DynamicList<labelPair>* pairs = pairsWithin(x, r, search);
+    return !pairs || pairs->size() > 0;
+}
+
+
+const Foam::DynamicList<Foam::labelPair>* Foam::verletList::pairsWithin
+(
+    const pointField& x,
+    const scalarList& r,
+    const scalar search
+)
+{
     if (2*rMax_ + search > cellWidth_)
     {
-        return true;
+        return nullptr;
     }
     cells_->findPairs(x, r, search, reachPairs_);
-    return reachPairs_.size() > 0;
+    return &reachPairs_;
 }
 
 
