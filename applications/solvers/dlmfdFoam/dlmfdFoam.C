@@ -140,6 +140,11 @@ int main(int argc, char *argv[])
                 #include "pEqn.H"
             }
 
+            if (particles.valid() && particles->penalised())
+            {
+                particles->fluidStepEnd(UEqn.H());
+            }
+
             laminarTransport.correct();
 
             // With more than one outer corrector the constraint is imposed

@@ -285,6 +285,12 @@ Foam::dlmfdCoupling::dlmfdCoupling
         mesh,
         properties_.optionalSubDict("fictitiousDomain")
     ),
+    penalty_
+    (
+        mesh,
+        properties_.optionalSubDict("fictitiousDomain"),
+        fd_.treatment()
+    ),
     Fh_(),
     Th_(),
     series_(),
@@ -319,10 +325,11 @@ Foam::dlmfdCoupling::dlmfdCoupling
             << " >= 1 (1: a row of particles.dat every step)"
             << exit(FatalIOError);
     }
+    wordList fdKeywords(fictitiousDomain::keywords());
+    fdKeywords.append(fluidStepPenalty::keywords());
     knownKeywords::require
     (
-        properties_, fictitiousDomain::keywords(), "fictitiousDomain",
-        propertiesFile
+        properties_, fdKeywords, "fictitiousDomain", propertiesFile
     );
 
     // Walls from the mesh's planar patches, where asked for
@@ -389,9 +396,30 @@ Foam::dlmfdCoupling::dlmfdCoupling
                 << m << " is not allowed; it must be > 0"
                 << exit(FatalError);
         }
+        // The penalty holds a free body at its velocity of the step's
+        // start while the fluid moves: explicit in the added mass, it
+        // oscillated and grew for ten Cate's E2 sphere (m = 1.14) and ran
+        // steadily at m = 2 (benchmarks/accuracyCost, README)
+        if
+        (
+            penalty_.on() && p.motion() == rigidParticle::motionKind::free
+         && m < 2
+        )
+        {
+            FatalErrorInFunction
+                << "particle " << granular_.id(i) << ": density ratio " << m
+                << " is not allowed with constant/dlmfdProperties"
+                << " fictitiousDomain/fluidStepForce penalty; a free"
+                << " particle needs m >= 2 there (fixed and prescribed ones"
+                << " any m), or fluidStepForce multipliers" << exit(FatalError);
+        }
     }
     Info<< "    walls " << granular_.walls().size() << ", contact law "
         << "sub-step T_c/N = " << granular_.maxSubStep() << " s" << nl
+        << "    fluid step held by "
+        << (penalty_.on()
+          ? "a penalty, K dt = " + Foam::name(penalty_.factor())
+          : word("the last multipliers' force")) << nl
         << "    periods " << fd_.period() << " m (0: not periodic); "
         << (Pstream::parRun() ? "granular step on the master of " : "")
         << (Pstream::parRun() ? Foam::name(Pstream::nProcs()) + " ranks" : "serial")

@@ -370,6 +370,31 @@ void Foam::fictitiousDomain::keepStepStart(const volVectorField& U)
 }
 
 
+void Foam::fictitiousDomain::addReleased
+(
+    const UList<vector>& momentum,
+    const UList<vector>& moment
+)
+{
+    if (pendingMomentum_.size() != momentum.size())
+    {
+        pendingMomentum_.setSize(momentum.size(), Zero);
+        pendingMoment_.setSize(momentum.size(), Zero);
+    }
+    forAll(momentum, b)
+    {
+        pendingMomentum_[b] += momentum[b];
+        pendingMoment_[b] += moment[b];
+    }
+}
+
+
+void Foam::fictitiousDomain::clearSource()
+{
+    source_ == dimensionedVector(source_.dimensions(), Zero);
+}
+
+
 void Foam::fictitiousDomain::rewindToStepStart()
 {
     if (stepStartIndex_ != mesh_.time().timeIndex())

@@ -223,6 +223,12 @@ Foam::fictitiousDomain::solve
                 con.released = released[b];
                 con.releasedMoment = releasedMoment[b];
             }
+            if (b < pendingMomentum_.size())
+            {
+                // Momentum the fluid gained outside the step (a penalty)
+                con.released += pendingMomentum_[b];
+                con.releasedMoment += pendingMoment_[b];
+            }
             if (con.centres.empty() && con.released == vector::zero)
             {
                 continue;
@@ -237,6 +243,8 @@ Foam::fictitiousDomain::solve
             cellsTo[q].append(std::move(cells));
             outgoing[q].append(std::move(con));
         }
+        pendingMomentum_.clear();
+        pendingMoment_.clear();
         // The deviations of the last step are in the contributions now;
         // this step sets those of the cells inside a body
         deviation_.primitiveFieldRef() = Zero;
