@@ -45,20 +45,25 @@ TEST(fluidStepPenalty, isOffUnlessAskedFor)
 {
     test::foamTestCase tc;
     const fvMesh& mesh = tc.makeBoxMesh(4, 4, 4, vector::one);
+    const cellCentreSearch search(mesh);
     using treatment = fictitiousDomain::surfaceTreatment;
 
-    const fluidStepPenalty off(mesh, fdDict(""), treatment::ghostCells);
+    const fluidStepPenalty off
+    (
+        mesh, fdDict(""), treatment::ghostCells, search
+    );
     EXPECT_FALSE(off.on());
 
     const fluidStepPenalty multipliers
     (
-        mesh, fdDict("fluidStepForce multipliers;"), treatment::fluidStencil
+        mesh, fdDict("fluidStepForce multipliers;"), treatment::fluidStencil,
+        search
     );
     EXPECT_FALSE(multipliers.on());
 
     const fluidStepPenalty on
     (
-        mesh, fdDict("fluidStepForce penalty;"), treatment::ghostCells
+        mesh, fdDict("fluidStepForce penalty;"), treatment::ghostCells, search
     );
     EXPECT_TRUE(on.on());
     EXPECT_EQ(on.factor(), 100);
@@ -69,13 +74,15 @@ TEST(fluidStepPenalty, refusesWhatItCannotDo)
 {
     test::foamTestCase tc;
     const fvMesh& mesh = tc.makeBoxMesh(4, 4, 4, vector::one);
+    const cellCentreSearch search(mesh);
     using treatment = fictitiousDomain::surfaceTreatment;
 
     std::string e = testInput::errorOf([&]
     {
         fluidStepPenalty p
         (
-            mesh, fdDict("fluidStepForce implicit;"), treatment::ghostCells
+            mesh, fdDict("fluidStepForce implicit;"), treatment::ghostCells,
+            search
         );
     });
     EXPECT_NE(e.find("fluidStepForce implicit"), std::string::npos) << e;
@@ -87,7 +94,7 @@ TEST(fluidStepPenalty, refusesWhatItCannotDo)
         fluidStepPenalty p
         (
             mesh, fdDict("fluidStepForce penalty; penaltyFactor 0;"),
-            treatment::ghostCells
+            treatment::ghostCells, search
         );
     });
     EXPECT_NE(e.find("penaltyFactor 0"), std::string::npos) << e;
@@ -97,7 +104,8 @@ TEST(fluidStepPenalty, refusesWhatItCannotDo)
     {
         fluidStepPenalty p
         (
-            mesh, fdDict("fluidStepForce penalty;"), treatment::fluidStencil
+            mesh, fdDict("fluidStepForce penalty;"), treatment::fluidStencil,
+            search
         );
     });
     EXPECT_NE(e.find("ghostCells"), std::string::npos) << e;
@@ -116,6 +124,7 @@ TEST(fluidStepPenalty, givesTheFluidInsideTheBodyItsMomentumScaledByTheTimeSchem
     {
         test::foamTestCase tc;
         const fvMesh& mesh = tc.makeBoxMesh(16, 16, 16, vector::one);
+        const cellCentreSearch search(mesh);
         volVectorField U
         (
             IOobject("U", mesh.time().timeName(), mesh),
@@ -127,7 +136,11 @@ TEST(fluidStepPenalty, givesTheFluidInsideTheBodyItsMomentumScaledByTheTimeSchem
         const scalar dt = 0.01;
 
         particleShapes::sphere ball("ball", 0.5);
-        for (const point& centre : {point(0.5, 0.5, 0.5), point(0.02, 0.5, 0.97)})
+        const List<point> centres
+        ({
+            point(0.5, 0.5, 0.5), point(0.02, 0.5, 0.97)
+        });
+        for (const point& centre : centres)
         {
             List<fictitiousDomain::body> bodies(1);
             bodies[0].shape = &ball;
@@ -137,7 +150,7 @@ TEST(fluidStepPenalty, givesTheFluidInsideTheBodyItsMomentumScaledByTheTimeSchem
             fluidStepPenalty penalty
             (
                 mesh, fdDict("fluidStepForce penalty; penaltyFactor 50;"),
-                fictitiousDomain::surfaceTreatment::ghostCells
+                fictitiousDomain::surfaceTreatment::ghostCells, search
             );
             const vector period(vector::one);
             const scalar c = ddt == "Euler" ? 1 : 1.5;

@@ -289,7 +289,8 @@ Foam::dlmfdCoupling::dlmfdCoupling
     (
         mesh,
         properties_.optionalSubDict("fictitiousDomain"),
-        fd_.treatment()
+        fd_.treatment(),
+        fd_.search()
     ),
     Fh_(),
     Th_(),

@@ -201,14 +201,8 @@ void Foam::fictitiousDomain::releasedDeviations
             continue;
         }
         // The nearest periodic image of the cell to the body
-        vector arm = C[c] - bodies[o].centre;
-        for (direction d = 0; d < vector::nComponents; ++d)
-        {
-            if (period_[d] > 0)
-            {
-                arm[d] -= period_[d]*std::round(arm[d]/period_[d]);
-            }
-        }
+        const vector arm =
+            cellCentreSearch::nearestImage(C[c] - bodies[o].centre, period_);
         const vector p = V[c]*deviation_[c];
         released[o] += p;
         moment[o] += arm ^ p;

@@ -20,13 +20,14 @@ Foam::fluidStepPenalty::fluidStepPenalty
 (
     const fvMesh& mesh,
     const dictionary& dict,
-    const fictitiousDomain::surfaceTreatment treatment
+    const fictitiousDomain::surfaceTreatment treatment,
+    const cellCentreSearch& search
 )
 :
     mesh_(mesh),
     on_(false),
     factor_(dict.getOrDefault<scalar>("penaltyFactor", 100)),
-    search_(mesh),
+    search_(search),
     holder_(),
     arm_(),
     target_(),
@@ -176,14 +177,10 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::fluidStepPenalty::matrix
             }
             forAll(bodies, b)
             {
-                vector arm = C[c] - bodies[b].centre;
-                for (direction d = 0; d < vector::nComponents; ++d)
-                {
-                    if (period[d] > 0)
-                    {
-                        arm[d] -= period[d]*std::round(arm[d]/period[d]);
-                    }
-                }
+                const vector arm = cellCentreSearch::nearestImage
+                (
+                    C[c] - bodies[b].centre, period
+                );
                 const scalar dist2 = magSqr(arm);
                 if (dist2 < nearD2[c])
                 {
