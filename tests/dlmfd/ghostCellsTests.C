@@ -329,6 +329,10 @@ TEST(ghostCells, withCutCellsOnlyCutFluidCellsAreForcedEvenInATwoCellGap)
         dictionary dict(ghostCells());
         dict.add("ghostCutCells", cut);
         fictitiousDomain fd(g.mesh, dict);
+        if (fd.needsFluidRelaxation())
+        {
+            fd.setFluidRelaxation(scalarField(g.mesh.nCells(), 0.5), true);
+        }
         const List<fictitiousDomain::result>& res = fd.solve(U, g.bodies, 0.01);
         label free = 0, freeInGap = 0, cutInGap = 0;
         forAll(U, c)
@@ -372,9 +376,10 @@ TEST(ghostCells, cutCellsAreForcedInProportionToTheirPartInsideTheBody)
     // beyond a row of cell centres (a body cell d = 0.3 h in) and whose -x
     // face 0.1 cell short of one (a fluid cell s = 0.1 h out). With
     // ghostCutCells solidFractionBothSides the force density in every cell
-    // is that of ghostCutCells full times the part of the cell inside the
-    // body, 1/2 + d/h_n between 0 and 1: under the middle of those faces
-    // 0.8 and 0.4, in the cells deeper than half a cell 1
+    // is that of ghostCutCells full times phi beta/(phi beta + 1 - phi), phi
+    // the part of the cell inside the body, 1/2 + d/h_n between 0 and 1
+    // (under the middle of those faces 0.8 and 0.4, in the cells deeper
+    // than half a cell 1), beta the fluid's relaxation over the step
     test::foamTestCase tc;
     const scalar h = 1.0/24, edge = 0.3;
     const fvMesh& mesh = tc.makeBoxMesh(24, 24, 24, vector::one);
@@ -396,12 +401,19 @@ TEST(ghostCells, cutCellsAreForcedInProportionToTheirPartInsideTheBody)
     bodies[0].free = false;
     bodies[0].centre = point(0.5 + 0.2*h, 0.5, 0.5);
 
+    // The fluid's relaxation over the step, beta = dt A_f, the same in
+    // every cell: the cell is moved phi beta/(phi beta + 1 - phi) of its way
+    const scalar beta = 0.7;
     const auto sourceWith = [&](const word& cut)
     {
         volVectorField U("U", tU());
         dictionary dict(ghostCells());
         dict.add("ghostCutCells", cut);
         fictitiousDomain fd(mesh, dict);
+        if (fd.needsFluidRelaxation())
+        {
+            fd.setFluidRelaxation(scalarField(mesh.nCells(), beta), true);
+        }
         fd.solve(U, bodies, 0.01);
         return vectorField(fd.source().primitiveField());
     };
@@ -433,7 +445,9 @@ TEST(ghostCells, cutCellsAreForcedInProportionToTheirPartInsideTheBody)
             ++nOut;
         }
         nForced += mag(full[c]) > 0;
-        EXPECT_LT(mag(share[c] - expected*full[c]), 1e-9*(1 + mag(full[c])))
+        const scalar step =
+            expected >= 1 ? 1 : expected*beta/(expected*beta + 1 - expected);
+        EXPECT_LT(mag(share[c] - step*full[c]), 1e-9*(1 + mag(full[c])))
             << str(x) << " expected " << expected << " of " << str(full[c])
             << ", got " << str(share[c]);
     }
@@ -481,6 +495,33 @@ TEST(ghostCells, badSettingsAreRefusedNamingTheValidOnes)
     {
         EXPECT_NE(shear.find(name), std::string::npos) << shear;
     }
+    // The cut cells' solid fraction needs the fluid step's relaxation of
+    // the time step under way, and a negative one is refused
+    fictitiousDomain fd
+    (
+        mesh,
+        testInput::parse("surfaceTreatment ghostCells; ghostCutCells solidFraction;")
+    );
+    volVectorField U
+    (
+        IOobject("U", mesh.time().timeName(), mesh),
+        mesh,
+        dimensionedVector(dimVelocity, Zero)
+    );
+    const std::string unset = testInput::errorOf([&]
+    {
+        fd.solve(U, List<fictitiousDomain::body>(), 0.01);
+    });
+    EXPECT_NE(unset.find("solidFraction needs the fluid step's momentum diagonal"),
+        std::string::npos) << unset;
+    scalarField beta(mesh.nCells(), 1);
+    beta[3] = -0.5;
+    const std::string negative = testInput::errorOf([&]
+    {
+        fd.setFluidRelaxation(beta, true);
+    });
+    EXPECT_NE(negative.find("negative in cell 3"), std::string::npos) << negative;
+    EXPECT_NE(negative.find("-0.5"), std::string::npos) << negative;
 }
 
 

@@ -94,6 +94,30 @@ Foam::tensor Foam::dlmfdCoupling::predictedRotation
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::dlmfdCoupling::fluidStepMatrix(const fvVectorMatrix& UEqn)
+{
+    if (!fd_.needsFluidRelaxation())
+    {
+        return;
+    }
+    // beta = dt A_f: the diagonal of U's equation per unit volume less the
+    // time scheme's a (1/dt Euler, about 1.5/dt backward), times dt; with
+    // a penalty the fluid step does not carry the cut cells' force, and
+    // the relaxation is (A - a)/a
+    const volVectorField& U = UEqn.psi();
+    const scalarField A(UEqn.A()().primitiveField());
+    const scalarField a(fvm::ddt(U)().A()().primitiveField());
+    if (penalised())
+    {
+        fd_.setFluidRelaxation((A - a)/a, false);
+    }
+    else
+    {
+        fd_.setFluidRelaxation(mesh_.time().deltaTValue()*(A - a), true);
+    }
+}
+
+
 Foam::tmp<Foam::fvVectorMatrix> Foam::dlmfdCoupling::penalty
 (
     const volVectorField& U

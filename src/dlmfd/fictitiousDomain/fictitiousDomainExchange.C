@@ -130,6 +130,16 @@ void Foam::fictitiousDomain::collect
                 label(ghostOwner_[c]) == b ? deviation_[c] : Zero;
         }
     }
+    if (needsFluidRelaxation())
+    {
+        // The forced cells' fluid relaxation (the data cells need none)
+        const label nForced = con.nInterior + con.nCut;
+        con.relaxation.setSize(nForced);
+        for (label i = 0; i < nForced; ++i)
+        {
+            con.relaxation[i] = fluidRelaxation_[cellList[i]];
+        }
+    }
     con.centres.transfer(centres);
     con.volumes.setSize(cellList.size());
     con.u.setSize(cellList.size());
@@ -172,6 +182,19 @@ Foam::fictitiousDomain::solve
         FatalErrorInFunction
             << "an outer corrector's solve needs keepStepStart() first in"
             << " the step" << exit(FatalError);
+    }
+    if
+    (
+        needsFluidRelaxation()
+     && fluidRelaxationIndex_ != mesh_.time().timeIndex()
+    )
+    {
+        FatalErrorInFunction
+            << "ghostCutCells " << cutCellForcingNames[cutCells_]
+            << " needs the fluid step's momentum diagonal of this time step"
+            << " (setFluidRelaxation, time index "
+            << mesh_.time().timeIndex() << "; last set in "
+            << fluidRelaxationIndex_ << ")" << exit(FatalError);
     }
     vectorField& u = U.primitiveFieldRef();
     const scalarField& a = stepDdtCoeff_;

@@ -49,11 +49,27 @@ Description
 
     The cells the surface cuts (centres within half a cell of it): with
     ghostCutCells solidFractionBothSides each is forced by
-    the part of it inside the body, 1/2 + d/h_n (d the centre's depth,
-    negative outside; h_n the cell's width along n): a fluid cell s = -d
-    out takes that share of the fitted profile u_r + s a_t + b s^2 n, a
-    body cell keeps the rest of its velocity (counted in its deviation, so
-    the body's balance below does not change). Without it (none, the
+    the part of it inside the body, phi = 1/2 + d/h_n (d the centre's
+    depth, negative outside; h_n the cell's width along n): a fluid cell
+    s = -d out is held at phi of the fitted profile u_r + s a_t + b s^2 n,
+    a body cell keeps the rest of its velocity (counted in its deviation,
+    so the body's balance below does not change). Held means: in a steady
+    state u = phi u_t + (1 - phi) u_f, u_t the target, u_f the velocity
+    the fluid's own equation gives the cell (A_f u_f its neighbours' and
+    the pressure's pull, A_f its momentum diagonal without the ddt part),
+    as a Brinkman term (phi/(1 - phi)) A_f (u_t - u) would. The fluid step
+    carries the last force S, which this step replaces, so in a steady
+    state S = (sigma/(1 - sigma)) (u_t - u)/dt for a step that moves the
+    cell the share sigma of its way to u_t: sigma = phi beta/(phi beta +
+    1 - phi), beta = dt A_f (setFluidRelaxation), gives the Brinkman
+    term whatever dt. With fluidStepForce penalty the fluid step does not
+    carry S; a step that solves the cell implicitly (u_hat = (u + beta'
+    u_f)/(1 + beta'), beta' = beta/c, c = dt times the ddt diagonal) and
+    moves it sigma = phi beta'/(beta' + 1 - phi) of its way has the same
+    steady state (exact for the cell alone, its neighbours held).
+    solidFraction used sigma = phi before 2026-12-03, a
+    hold that grew as 1/dt (a frozen sphere array had 15 % more drag at
+    CFL 0.1 than at 0.5; benchmarks/frozenArrays). Without it (none, the
     default) the blockage of the body is that of the cells whose centres
     lie inside: a cube whose faces stand 0.4 cell beyond a row of centres
     acted 0.8 cell thinner, with 22 % too little drag at D/dx 6
@@ -94,6 +110,32 @@ Description
 #include "fictitiousDomainParts.H"
 
 #include <algorithm>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+
+// The share of its way to the target a cell of solid fraction s is moved
+// in a step whose fluid relaxation is beta (dt A_f, over c without the
+// source carried; see the description), which makes the steady state s
+// target + (1 - s) u_f whatever dt
+Foam::scalar stepShare
+(
+    const Foam::scalar s,
+    const Foam::scalar beta,
+    const bool carried
+)
+{
+    if (s >= 1)
+    {
+        return 1;
+    }
+    return carried ? s*beta/(s*beta + 1 - s) : s*beta/(beta + 1 - s);
+}
+
+} // End anonymous namespace
+
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -225,7 +267,7 @@ void Foam::fictitiousDomain::solveGhostBody
     // fluid cells around (data), rank after rank; f and dev follow the
     // order of the first two groups, part after part
     DynamicList<point> xIn, xCut, xData;
-    DynamicList<scalar> vIn, vCut;
+    DynamicList<scalar> vIn, vCut, betaIn, betaCut;
     DynamicList<vector> uIn, devIn, uCut, uData;
     DynamicList<label> order;    // into In (>= 0) or Cut (-1 - index)
     vector released(Zero), releasedMoment(Zero);
@@ -242,6 +284,10 @@ void Foam::fictitiousDomain::solveGhostBody
                 vIn.append(c->volumes[i]);
                 uIn.append(c->u[i]);
                 devIn.append(c->deviation[i]);
+                if (c->relaxation.size())
+                {
+                    betaIn.append(c->relaxation[i]);
+                }
             }
             else if (i < c->nInterior + c->nCut)
             {
@@ -249,6 +295,10 @@ void Foam::fictitiousDomain::solveGhostBody
                 xCut.append(c->centres[i]);
                 vCut.append(c->volumes[i]);
                 uCut.append(c->u[i]);
+                if (c->relaxation.size())
+                {
+                    betaCut.append(c->relaxation[i]);
+                }
             }
             else
             {
@@ -373,7 +423,11 @@ void Foam::fictitiousDomain::solveGhostBody
         )
         {
             const scalar hn = h*(mag(n.x()) + mag(n.y()) + mag(n.z()));
-            share[j] = min(max(0.5 - sj/hn, scalar(0)), scalar(1));
+            share[j] = stepShare
+            (
+                min(max(0.5 - sj/hn, scalar(0)), scalar(1)), betaCut[j],
+                sourceCarried_
+            );
         }
         const tensor nn(n*n), tt(tensor::I - nn);
         scalar sa = 0, sb = 0;
@@ -456,7 +510,10 @@ void Foam::fictitiousDomain::solveGhostBody
         if (cutCells_ == cutCellForcing::solidFractionBothSides)
         {
             const scalar hn = h*(mag(n.x()) + mag(n.y()) + mag(n.z()));
-            shareIn[c] = min(0.5 + d/hn, scalar(1));
+            shareIn[c] = stepShare
+            (
+                min(0.5 + d/hn, scalar(1)), betaIn[c], sourceCarried_
+            );
         }
         const scalar fade = fadeOf(d);
         if (fade <= 0)
@@ -618,6 +675,57 @@ void Foam::fictitiousDomain::solveGhostBody
         }
         res.constraintError = mag(m)/max(B.shape->volume(), VSMALL);
     }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::fictitiousDomain::needsFluidRelaxation() const
+{
+    return
+        treatment_ == surfaceTreatment::ghostCells
+     && (
+            cutCells_ == cutCellForcing::solidFraction
+         || cutCells_ == cutCellForcing::solidFractionBothSides
+        );
+}
+
+
+void Foam::fictitiousDomain::setFluidRelaxation
+(
+    const scalarField& relaxation,
+    const bool carried
+)
+{
+    sourceCarried_ = carried;
+    if (relaxation.size() != mesh_.nCells())
+    {
+        FatalErrorInFunction
+            << relaxation.size() << " values for " << mesh_.nCells()
+            << " cells" << exit(FatalError);
+    }
+    fluidRelaxation_ = relaxation;
+    forAll(fluidRelaxation_, c)
+    {
+        // A_f sums the viscous and convective diagonals, >= 0 for a
+        // divergence-free flux; the round-off of the flux's divergence
+        // (linear convection) may leave it a little below
+        scalar& beta = fluidRelaxation_[c];
+        if (beta < -1e-3)
+        {
+            FatalErrorInFunction
+                << "ghostCutCells " << cutCellForcingNames[cutCells_]
+                << ": the fluid's momentum diagonal without its ddt part is"
+                << " negative in cell " << c << " at " << mesh_.C()[c]
+                << " (" << beta << " in units of the step); the cut cells'"
+                << " solid fraction needs a momentum equation whose"
+                << " diagonal holds its own (fvOptions or schemes with a"
+                << " negative implicit source are not supported)"
+                << exit(FatalError);
+        }
+        beta = max(beta, scalar(0));
+    }
+    fluidRelaxationIndex_ = mesh_.time().timeIndex();
 }
 
 
