@@ -331,7 +331,7 @@ TEST(ghostCells, withCutCellsOnlyCutFluidCellsAreForcedEvenInATwoCellGap)
         fictitiousDomain fd(g.mesh, dict);
         if (fd.needsFluidRelaxation())
         {
-            fd.setFluidRelaxation(scalarField(g.mesh.nCells(), 0.5), true);
+            fd.setFluidRelaxation(scalarField(g.mesh.nCells(), 0.5));
         }
         const List<fictitiousDomain::result>& res = fd.solve(U, g.bodies, 0.01);
         label free = 0, freeInGap = 0, cutInGap = 0;
@@ -412,7 +412,7 @@ TEST(ghostCells, cutCellsAreForcedInProportionToTheirPartInsideTheBody)
         fictitiousDomain fd(mesh, dict);
         if (fd.needsFluidRelaxation())
         {
-            fd.setFluidRelaxation(scalarField(mesh.nCells(), beta), true);
+            fd.setFluidRelaxation(scalarField(mesh.nCells(), beta));
         }
         fd.solve(U, bodies, 0.01);
         return vectorField(fd.source().primitiveField());
@@ -518,7 +518,7 @@ TEST(ghostCells, badSettingsAreRefusedNamingTheValidOnes)
     beta[3] = -0.5;
     const std::string negative = testInput::errorOf([&]
     {
-        fd.setFluidRelaxation(beta, true);
+        fd.setFluidRelaxation(beta);
     });
     EXPECT_NE(negative.find("negative in cell 3"), std::string::npos) << negative;
     EXPECT_NE(negative.find("-0.5"), std::string::npos) << negative;

@@ -101,20 +101,12 @@ void Foam::dlmfdCoupling::fluidStepMatrix(const fvVectorMatrix& UEqn)
         return;
     }
     // beta = dt A_f: the diagonal of U's equation per unit volume less the
-    // time scheme's a (1/dt Euler, about 1.5/dt backward), times dt; with
-    // a penalty the fluid step does not carry the cut cells' force, and
-    // the relaxation is (A - a)/a
+    // time scheme's a (1/dt Euler, about 1.5/dt backward), times dt; the
+    // fluid step carries the cut cells' force (with a penalty too)
     const volVectorField& U = UEqn.psi();
     const scalarField A(UEqn.A()().primitiveField());
     const scalarField a(fvm::ddt(U)().A()().primitiveField());
-    if (penalised())
-    {
-        fd_.setFluidRelaxation((A - a)/a, false);
-    }
-    else
-    {
-        fd_.setFluidRelaxation(mesh_.time().deltaTValue()*(A - a), true);
-    }
+    fd_.setFluidRelaxation(mesh_.time().deltaTValue()*(A - a));
 }
 
 
@@ -252,10 +244,17 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
     {
         // What each body gave this rank's fluid in the step: the fluid
         // step's momentum paid above and the constraint's force density
-        penalty_.constraintMomentum(fd_.source(), dt, momentum, moment);
+        // in the cells the penalty holds next (the cut cells' force stays
+        // in source(), carried by the next fluid step as without penalty,
+        // whose backward history then returns what the step takes out)
+        const vectorField all(fd_.source().primitiveField());
+        fd_.clearSource();
+        penalty_.constraintMomentum
+        (
+            all - fd_.source().primitiveField(), dt, momentum, moment
+        );
         givenMomentum_.transfer(momentum);
         givenMoment_.transfer(moment);
-        fd_.clearSource();
     }
     const scalar fdComm = fd_.communicationSeconds() - commBefore;
     fdSeconds_ += clock.timeIncrement() - fdComm;

@@ -181,7 +181,6 @@ Foam::fictitiousDomain::fictitiousDomain
     stepStartOwner_(),
     stepStartIndex_(-1),
     fluidRelaxation_(),
-    sourceCarried_(true),
     fluidRelaxationIndex_(-1),
     results_(),
     commSeconds_(0),
@@ -394,7 +393,16 @@ void Foam::fictitiousDomain::addReleased
 
 void Foam::fictitiousDomain::clearSource()
 {
-    source_ == dimensionedVector(source_.dimensions(), Zero);
+    // The cells of this step's claims: inside a body, or cut by one
+    vectorField& f = source_.primitiveFieldRef();
+    forAll(f, c)
+    {
+        if (owners_.owner(c) < 0 || owners_.inside(c))
+        {
+            f[c] = Zero;
+        }
+    }
+    source_.correctBoundaryConditions();
 }
 
 

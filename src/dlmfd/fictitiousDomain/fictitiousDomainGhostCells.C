@@ -62,11 +62,8 @@ Description
     state S = (sigma/(1 - sigma)) (u_t - u)/dt for a step that moves the
     cell the share sigma of its way to u_t: sigma = phi beta/(phi beta +
     1 - phi), beta = dt A_f (setFluidRelaxation), gives the Brinkman
-    term whatever dt. With fluidStepForce penalty the fluid step does not
-    carry S; a step that solves the cell implicitly (u_hat = (u + beta'
-    u_f)/(1 + beta'), beta' = beta/c, c = dt times the ddt diagonal) and
-    moves it sigma = phi beta'/(beta' + 1 - phi) of its way has the same
-    steady state (exact for the cell alone, its neighbours held).
+    term whatever dt (fluidStepForce penalty holds the bodies' own cells
+    in the fluid step, but the cut cells' S is carried there too).
     solidFraction used sigma = phi before 2026-12-03, a
     hold that grew as 1/dt (a frozen sphere array had 15 % more drag at
     CFL 0.1 than at 0.5; benchmarks/frozenArrays). Without it (none, the
@@ -117,21 +114,12 @@ namespace
 {
 
 // The share of its way to the target a cell of solid fraction s is moved
-// in a step whose fluid relaxation is beta (dt A_f, over c without the
-// source carried; see the description), which makes the steady state s
-// target + (1 - s) u_f whatever dt
-Foam::scalar stepShare
-(
-    const Foam::scalar s,
-    const Foam::scalar beta,
-    const bool carried
-)
+// in a step whose fluid relaxation is beta (dt A_f, see the description):
+// s beta/(s beta + 1 - s), which makes the steady state s target + (1 -
+// s) u_f whatever dt
+Foam::scalar stepShare(const Foam::scalar s, const Foam::scalar beta)
 {
-    if (s >= 1)
-    {
-        return 1;
-    }
-    return carried ? s*beta/(s*beta + 1 - s) : s*beta/(beta + 1 - s);
+    return s >= 1 ? 1 : s*beta/(s*beta + 1 - s);
 }
 
 } // End anonymous namespace
@@ -425,8 +413,7 @@ void Foam::fictitiousDomain::solveGhostBody
             const scalar hn = h*(mag(n.x()) + mag(n.y()) + mag(n.z()));
             share[j] = stepShare
             (
-                min(max(0.5 - sj/hn, scalar(0)), scalar(1)), betaCut[j],
-                sourceCarried_
+                min(max(0.5 - sj/hn, scalar(0)), scalar(1)), betaCut[j]
             );
         }
         const tensor nn(n*n), tt(tensor::I - nn);
@@ -510,10 +497,7 @@ void Foam::fictitiousDomain::solveGhostBody
         if (cutCells_ == cutCellForcing::solidFractionBothSides)
         {
             const scalar hn = h*(mag(n.x()) + mag(n.y()) + mag(n.z()));
-            shareIn[c] = stepShare
-            (
-                min(0.5 + d/hn, scalar(1)), betaIn[c], sourceCarried_
-            );
+            shareIn[c] = stepShare(min(0.5 + d/hn, scalar(1)), betaIn[c]);
         }
         const scalar fade = fadeOf(d);
         if (fade <= 0)
@@ -691,13 +675,8 @@ bool Foam::fictitiousDomain::needsFluidRelaxation() const
 }
 
 
-void Foam::fictitiousDomain::setFluidRelaxation
-(
-    const scalarField& relaxation,
-    const bool carried
-)
+void Foam::fictitiousDomain::setFluidRelaxation(const scalarField& relaxation)
 {
-    sourceCarried_ = carried;
     if (relaxation.size() != mesh_.nCells())
     {
         FatalErrorInFunction

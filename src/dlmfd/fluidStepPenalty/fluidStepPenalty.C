@@ -270,13 +270,12 @@ void Foam::fluidStepPenalty::momentum
 
 void Foam::fluidStepPenalty::constraintMomentum
 (
-    const volVectorField& source,
+    const vectorField& f,
     const scalar dt,
     List<vector>& momentum,
     List<vector>& moment
 ) const
 {
-    const vectorField& f = source.primitiveField();
     const scalarField& V = mesh_.V();
     forAll(near_, c)
     {
