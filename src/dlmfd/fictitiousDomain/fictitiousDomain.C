@@ -391,6 +391,50 @@ void Foam::fictitiousDomain::addReleased
 }
 
 
+bool Foam::fictitiousDomain::needsFluidRelaxation() const
+{
+    return
+        treatment_ == surfaceTreatment::ghostCells
+     && (
+            cutCells_ == cutCellForcing::solidFraction
+         || cutCells_ == cutCellForcing::solidFractionBothSides
+        );
+}
+
+
+void Foam::fictitiousDomain::setFluidRelaxation(const scalarField& relaxation)
+{
+    if (relaxation.size() != mesh_.nCells())
+    {
+        FatalErrorInFunction
+            << relaxation.size() << " values for " << mesh_.nCells()
+            << " cells" << exit(FatalError);
+    }
+    fluidRelaxation_ = relaxation;
+    forAll(fluidRelaxation_, c)
+    {
+        // A_f sums the viscous and convective diagonals, >= 0 for a
+        // divergence-free flux; the round-off of the flux's divergence
+        // (linear convection) may leave it a little below
+        scalar& beta = fluidRelaxation_[c];
+        if (beta < -1e-3)
+        {
+            FatalErrorInFunction
+                << "ghostCutCells " << cutCellForcingNames[cutCells_]
+                << ": the fluid's momentum diagonal without its ddt part is"
+                << " negative in cell " << c << " at " << mesh_.C()[c]
+                << " (" << beta << " in units of the step); the cut cells'"
+                << " solid fraction needs a momentum equation whose"
+                << " diagonal holds its own (fvOptions or schemes with a"
+                << " negative implicit source are not supported)"
+                << exit(FatalError);
+        }
+        beta = max(beta, scalar(0));
+    }
+    fluidRelaxationIndex_ = mesh_.time().timeIndex();
+}
+
+
 void Foam::fictitiousDomain::clearSource()
 {
     // The cells of this step's claims: inside a body, or cut by one

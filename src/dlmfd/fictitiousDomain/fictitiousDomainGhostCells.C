@@ -63,13 +63,13 @@ Description
     cell the share sigma of its way to u_t: sigma = phi beta/(phi beta +
     1 - phi), beta = dt A_f (setFluidRelaxation), gives the Brinkman
     term whatever dt (fluidStepForce penalty holds the bodies' own cells
-    in the fluid step, but the cut cells' S is carried there too).
-    solidFraction used sigma = phi before 2026-12-03, a
-    hold that grew as 1/dt (a frozen sphere array had 15 % more drag at
-    CFL 0.1 than at 0.5; benchmarks/frozenArrays). Without it (none, the
-    default) the blockage of the body is that of the cells whose centres
-    lie inside: a cube whose faces stand 0.4 cell beyond a row of centres
-    acted 0.8 cell thinner, with 22 % too little drag at D/dx 6
+    in the fluid step, but the cut cells' S is carried there too). Before
+    2026-12-03 sigma = phi: a hold growing as 1/dt (a frozen sphere array,
+    +15 % drag from CFL 0.5 to 0.1; benchmarks/frozenArrays). Without it
+    (none, the default) the blockage of the body is that of the cells
+    whose centres lie inside: a cube whose faces stand 0.4 cell beyond a
+    row of centres acted 0.8 cell thinner, with 22 % too little drag at
+    D/dx 6
     (benchmarks/fixedBodyDrag). It is not the default because free bodies
     settle slower with it (doc/dictionaries.md): a cell crossing the
     surface then carries a deviation of about half the fluid's relative
@@ -659,52 +659,6 @@ void Foam::fictitiousDomain::solveGhostBody
         }
         res.constraintError = mag(m)/max(B.shape->volume(), VSMALL);
     }
-}
-
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-bool Foam::fictitiousDomain::needsFluidRelaxation() const
-{
-    return
-        treatment_ == surfaceTreatment::ghostCells
-     && (
-            cutCells_ == cutCellForcing::solidFraction
-         || cutCells_ == cutCellForcing::solidFractionBothSides
-        );
-}
-
-
-void Foam::fictitiousDomain::setFluidRelaxation(const scalarField& relaxation)
-{
-    if (relaxation.size() != mesh_.nCells())
-    {
-        FatalErrorInFunction
-            << relaxation.size() << " values for " << mesh_.nCells()
-            << " cells" << exit(FatalError);
-    }
-    fluidRelaxation_ = relaxation;
-    forAll(fluidRelaxation_, c)
-    {
-        // A_f sums the viscous and convective diagonals, >= 0 for a
-        // divergence-free flux; the round-off of the flux's divergence
-        // (linear convection) may leave it a little below
-        scalar& beta = fluidRelaxation_[c];
-        if (beta < -1e-3)
-        {
-            FatalErrorInFunction
-                << "ghostCutCells " << cutCellForcingNames[cutCells_]
-                << ": the fluid's momentum diagonal without its ddt part is"
-                << " negative in cell " << c << " at " << mesh_.C()[c]
-                << " (" << beta << " in units of the step); the cut cells'"
-                << " solid fraction needs a momentum equation whose"
-                << " diagonal holds its own (fvOptions or schemes with a"
-                << " negative implicit source are not supported)"
-                << exit(FatalError);
-        }
-        beta = max(beta, scalar(0));
-    }
-    fluidRelaxationIndex_ = mesh_.time().timeIndex();
 }
 
 
