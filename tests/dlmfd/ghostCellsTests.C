@@ -186,6 +186,117 @@ TEST(ghostCells, linearShearAlongAFaceIsExtrapolatedThroughTheWall)
 }
 
 
+TEST(ghostCells, curvedProfileIsCarriedThroughTheWallWithTheQuadraticFit)
+{
+    // The face of the test above with a profile that bends, U_y = a s +
+    // c s^2 (s = x - xf), as in a gap between two walls or a boundary
+    // layer thinner than the fit. With ghostFitOrder 2 the ghost cells
+    // under the face take the parabola continued through the wall, a (-d)
+    // + c d^2 (d = xf - x), to 2 % (the fit's regularisation: 1.3 % here); the
+    // linear fit (ghostFitOrder 1) reads a wall slope 10 % or more too low
+    faceShear s;
+    const scalar c = -2;
+    forAll(s.U, k)
+    {
+        const scalar sk = s.mesh.C()[k].x() - s.xf;
+        s.U[k] = vector(0, s.a*sk + c*sqr(sk), 0);
+    }
+    const volVectorField U0(s.U);
+    for (const label order : {2, 1})
+    {
+        dictionary dict(ghostCells());
+        dict.add("ghostShear", word("mirrored"));
+        dict.add("ghostFitOrder", order);
+        fictitiousDomain fd(s.mesh, dict);
+        volVectorField U(U0);
+        const fictitiousDomain::result r = fd.solve(U, s.bodies, 0.01)[0];
+        label checked = 0;
+        for (const label g : r.interiorCells)
+        {
+            const point& x = s.mesh.C()[g];
+            if (!s.underFace(x))
+            {
+                continue;
+            }
+            ++checked;
+            const scalar d = s.xf - x.x();
+            const scalar exact = -s.a*d + c*sqr(d);
+            if (order == 2)
+            {
+                EXPECT_NEAR(U[g].y(), exact, 2e-2*mag(exact)) << str(x);
+            }
+            else
+            {
+                EXPECT_GT(U[g].y(), 0.9*exact) << str(x);
+            }
+        }
+        EXPECT_GE(checked, 9);
+    }
+}
+
+
+TEST(ghostCells, gapProfileVanishesAtBothWallsWithTheQuadraticFit)
+{
+    // Two fixed cubes two cells apart, a plane Poiseuille profile across
+    // the gap, U_y = 4 U0 s (g - s)/g^2 (s from the first cube's face).
+    // Below the gap the first cube's fit has one layer of fluid cells
+    // beyond its cut cells; with ghostFitOrder 2 it also takes the second
+    // cube's face as a datum, so its ghost cells carry the parabola through
+    // the wall, 4 U0 (-d) (g + d)/g^2; the linear fit through the one
+    // layer gives a quarter of the wall slope
+    twoCubesInAGap gap;
+    const scalar h = twoCubesInAGap::h, g = 2*h, U0 = 0.3;
+    const scalar face = gap.bodies[0].centre.x() + twoCubesInAGap::edge/2;
+    const auto profile = [&](const scalar x)
+    {
+        const scalar s = x - face;
+        return 4*U0*s*(g - s)/sqr(g);
+    };
+    for (auto& b : gap.bodies)
+    {
+        b.free = false;
+    }
+    for (const label order : {2, 1})
+    {
+        dictionary dict(ghostCells());
+        dict.add("ghostShear", word("mirrored"));
+        dict.add("ghostFitOrder", order);
+        fictitiousDomain fd(gap.mesh, dict);
+        volVectorField U(gap.tU());
+        forAll(U, c)
+        {
+            const scalar x = gap.mesh.C()[c].x();
+            U[c] = vector(0, x > face && x < face + g ? profile(x) : 0, 0);
+        }
+        const fictitiousDomain::result r = fd.solve(U, gap.bodies, 0.01)[0];
+        label checked = 0;
+        for (const label c : r.interiorCells)
+        {
+            const point& x = gap.mesh.C()[c];
+            if
+            (
+                x.x() < face - h || mag(x.y() - 0.5) > 0.6*h
+             || mag(x.z() - 0.5) > 0.6*h
+            )
+            {
+                continue;
+            }
+            ++checked;
+            const scalar exact = profile(x.x());
+            if (order == 2)
+            {
+                EXPECT_NEAR(U[c].y(), exact, 2e-2*mag(exact)) << str(x);
+            }
+            else
+            {
+                EXPECT_GT(U[c].y(), 0.5*exact) << str(x);
+            }
+        }
+        EXPECT_EQ(checked, 4);
+    }
+}
+
+
 TEST(ghostCells, viscousShearMovesNoMassButGivesTheFluidTheWallShear)
 {
     // The shear of the test above with ghostShear viscous (the default):
@@ -483,6 +594,16 @@ TEST(ghostCells, badSettingsAreRefusedNamingTheValidOnes)
     });
     EXPECT_NE(narrow.find("ghostFitRadius = 1"), std::string::npos) << narrow;
     EXPECT_NE(narrow.find(">= 1.5"), std::string::npos) << narrow;
+    const std::string order = testInput::errorOf([&]
+    {
+        fictitiousDomain fd
+        (
+            mesh,
+            testInput::parse("surfaceTreatment ghostCells; ghostFitOrder 3;")
+        );
+    });
+    EXPECT_NE(order.find("ghostFitOrder = 3"), std::string::npos) << order;
+    EXPECT_NE(order.find("1 (s a_t) or 2"), std::string::npos) << order;
     const std::string shear = testInput::errorOf([&]
     {
         fictitiousDomain fd

@@ -111,6 +111,7 @@ Foam::fictitiousDomain::fictitiousDomain
         )
     ),
     ghostFitRadius_(dict.getOrDefault<scalar>("ghostFitRadius", 2.5)),
+    ghostFitOrder_(dict.getOrDefault<label>("ghostFitOrder", 1)),
     cutCells_
     (
         cutCellForcingNames.getOrDefault
@@ -204,6 +205,13 @@ Foam::fictitiousDomain::fictitiousDomain
             << " allowed; it must be >= 1.5 (in cell sizes)"
             << exit(FatalIOError);
     }
+    if (ghostFitOrder_ != 1 && ghostFitOrder_ != 2)
+    {
+        FatalIOErrorInFunction(dict)
+            << "ghostFitOrder = " << ghostFitOrder_ << " is not"
+            << " allowed; it must be 1 (s a_t) or 2 (s a_t + s^2 c_t)"
+            << exit(FatalIOError);
+    }
     if (!(stencilRadius_ >= 1))
     {
         FatalIOErrorInFunction(dict)
@@ -246,7 +254,8 @@ Foam::wordList Foam::fictitiousDomain::keywords()
 {
     return wordList
     ({
-        "surfaceTreatment", "ghostFitRadius", "ghostCutCells", "ghostShear",
+        "surfaceTreatment", "ghostFitRadius", "ghostFitOrder", "ghostCutCells",
+        "ghostShear",
         "surfacePoints", "surfacePointSpacing", "surfaceStencilRadius",
         "surfacePointRetraction", "tolerance", "maxIterations"
     });

@@ -318,7 +318,7 @@ Foam::fictitiousDomain::solve
             {
                 solveGhostBody
                 (
-                    bodies[b], cand.h[b], partsOf[b], dt, f, dev, res
+                    bodies, b, cand.h[b], partsOf[b], dt, f, dev, res
                 );
             }
             else

@@ -1,0 +1,140 @@
+/*---------------------------------------------------------------------------*\
+  dlmfdFoam: DLM/FD particle-resolved simulation of particulate flows
+-------------------------------------------------------------------------------
+License
+    This file is part of dlmfdFoam, an extension of OpenFOAM.
+
+    dlmfdFoam is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by the
+    Free Software Foundation, either version 3 of the License, or (at your
+    option) any later version. See <http://www.gnu.org/licenses/>.
+
+Description
+    The cells of the ghost-cell treatment (surfaceTreatment ghostCells):
+    which cells each body holds (inside it, and the fluid cells its
+    surface cuts) and which fluid cells its near-wall fits may read; and
+    the deviations that cells leaving the bodies take into the fluid.
+    Solving a body from them: fictitiousDomainGhostCells.C.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fictitiousDomain.H"
+#include "particleGeometry.H"
+#include "fictitiousDomainParts.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::fictitiousDomain::findGhostCandidates
+(
+    const UList<body>& bodies,
+    candidates& cand
+)
+{
+    // (startCandidates has undone the last claims and sized cand)
+    const vectorField& C = mesh_.C();
+
+    // Every body's inside cells first, so that the fluid cells of the
+    // next pass are those inside no body
+    DynamicList<label> near;
+    forAll(bodies, b)
+    {
+        const body& B = bodies[b];
+        const scalar rb = B.shape->boundingRadius();
+        const scalar h = cand.h[b];
+        cand.shifts[b] = nearShifts(B.centre, rb + reach()*h);
+        const List<vector>& shifts = cand.shifts[b];
+        forAll(shifts, si)
+        {
+            near.clear();
+            search_.cellsInBall(B.centre - shifts[si], rb + h, near);
+            for (const label c : near)
+            {
+                const point x = C[c] + shifts[si];
+                if (particleGeometry::contains(*B.shape, B.centre, B.R, x))
+                {
+                    cand.interior[b].append(c);
+                    cand.interiorShift[b].append(si);
+                    owners_.claim(c, b, magSqr(x - B.centre), true);
+                }
+            }
+        }
+    }
+
+    // The cells outside the body within reach of its surface (those inside
+    // another body are left out when collected)
+    forAll(bodies, b)
+    {
+        const body& B = bodies[b];
+        const scalar rb = B.shape->boundingRadius();
+        const scalar h = cand.h[b];
+        const scalar r = reach()*h;
+        const List<vector>& shifts = cand.shifts[b];
+        DynamicList<label> fluid, fluidShift;
+        forAll(shifts, si)
+        {
+            near.clear();
+            search_.cellsInBall(B.centre - shifts[si], rb + r, near);
+            for (const label c : near)
+            {
+                const point x = C[c] + shifts[si];
+                const scalar bound = particleGeometry::outsideDistanceBound
+                (
+                    *B.shape, B.centre, B.R, x
+                );
+                if (bound >= 0 && bound < r)
+                {
+                    fluid.append(c);
+                    fluidShift.append(si);
+                    // A cell the surface cuts (its centre less than half a
+                    // cell out) goes to the closest surface, which forces
+                    // it (ghostCutCells full or solidFraction)
+                    if (cutCells_ != cutCellForcing::none && bound < 0.5*h)
+                    {
+                        owners_.claim(c, b, sqr(bound), false);
+                    }
+                }
+            }
+        }
+        cand.stencils[b].setSize(1);
+        cand.stencilShifts[b].setSize(1);
+        cand.stencils[b][0].transfer(fluid);
+        cand.stencilShifts[b][0].transfer(fluidShift);
+    }
+}
+
+
+void Foam::fictitiousDomain::releasedDeviations
+(
+    const UList<body>& bodies,
+    List<vector>& released,
+    List<vector>& moment
+) const
+{
+    released.setSize(bodies.size());
+    moment.setSize(bodies.size());
+    released = Zero;
+    moment = Zero;
+    const vectorField& C = mesh_.C();
+    const scalarField& V = mesh_.V();
+    forAll(ghostOwner_, c)
+    {
+        const label o = label(ghostOwner_[c]);
+        if
+        (
+            o < 0 || o >= bodies.size()
+         || (owners_.owner(c) == o && owners_.inside(c))
+        )
+        {
+            continue;
+        }
+        // The nearest periodic image of the cell to the body
+        const vector arm =
+            cellCentreSearch::nearestImage(C[c] - bodies[o].centre, period_);
+        const vector p = V[c]*deviation_[c];
+        released[o] += p;
+        moment[o] += arm ^ p;
+    }
+}
+
+
+// ************************************************************************* //
