@@ -14,11 +14,14 @@ Description
     (surfaceTreatment ghostCells): a shear flow along a face is carried
     through the wall where the face is (ghostShear mirrored), or given to
     the viscous fluxes of the faces between the ghost and the fluid cells
-    only, the ghost cells moving rigidly (ghostShear viscous); every cell
-    within a cell of the surface has fluid to fit, whatever the resolution
-    (no point is left out); no fluid cell is forced, in a two-cell gap
-    between two cubes neither; with ghostCutCells, only those the surface cuts (centres less
-    than half a cell out).
+    only, the ghost cells moving rigidly (ghostShear viscous); with
+    ghostFitOrder 2 a profile that bends, and a gap's profile that
+    vanishes at the neighbour's face, are carried through the wall as
+    parabolas; every cell within a cell of the surface has fluid to fit,
+    whatever the resolution (no point is left out); no fluid cell is
+    forced, in a two-cell gap between two cubes neither; with
+    ghostCutCells, only those the surface cuts (centres less than half a
+    cell out).
 
 \*---------------------------------------------------------------------------*/
 
@@ -52,6 +55,24 @@ dictionary ghostCells()
     dictionary dict;
     dict.add("surfaceTreatment", word("ghostCells"));
     return dict;
+}
+
+
+//- Solve the bodies with ghostShear mirrored, whose ghost cells carry the
+//- fitted profile in their velocities, and the fit order given
+fictitiousDomain::result solveMirrored
+(
+    const fvMesh& mesh,
+    volVectorField& U,
+    const UList<fictitiousDomain::body>& bodies,
+    const label fitOrder
+)
+{
+    dictionary dict(ghostCells());
+    dict.add("ghostShear", word("mirrored"));
+    dict.add("ghostFitOrder", fitOrder);
+    fictitiousDomain fd(mesh, dict);
+    return fd.solve(U, bodies, 0.01)[0];
 }
 
 
@@ -151,6 +172,20 @@ struct faceShear
         return x.x() > xf - h && mag(x.y() - X.y()) < edge/2 - 3*h
             && mag(x.z() - X.z()) < edge/2 - 3*h;
     }
+
+    //- The body's cells of a result under the middle of the face
+    labelList cellsUnderFace(const fictitiousDomain::result& r) const
+    {
+        DynamicList<label> under;
+        for (const label g : r.interiorCells)
+        {
+            if (underFace(mesh.C()[g]))
+            {
+                under.append(g);
+            }
+        }
+        return labelList(std::move(under));
+    }
 };
 
 } // End anonymous namespace
@@ -165,35 +200,69 @@ TEST(ghostCells, linearShearAlongAFaceIsExtrapolatedThroughTheWall)
     // on that side. The ghost cells under the middle of that face take the
     // same linear profile on the other side of the wall: U_y = a (x - xf) < 0
     faceShear s;
-    dictionary dict(ghostCells());
-    dict.add("ghostShear", word("mirrored"));
-    fictitiousDomain fd(s.mesh, dict);
-    const fictitiousDomain::result r = fd.solve(s.U, s.bodies, 0.01)[0];
+    const fictitiousDomain::result r = solveMirrored(s.mesh, s.U, s.bodies, 1);
 
-    label checked = 0;
-    for (const label g : r.interiorCells)
+    const labelList under(s.cellsUnderFace(r));
+    for (const label g : under)
     {
         const point& x = s.mesh.C()[g];
-        if (s.underFace(x))
-        {
-            ++checked;
-            EXPECT_NEAR(s.U[g].y(), s.a*(x.x() - s.xf), 1e-12) << str(x);
-            EXPECT_LT(s.U[g].y(), 0) << str(x);
-        }
+        EXPECT_NEAR(s.U[g].y(), s.a*(x.x() - s.xf), 1e-12) << str(x);
+        EXPECT_LT(s.U[g].y(), 0) << str(x);
     }
-    EXPECT_GE(checked, 9);
+    EXPECT_GE(label(under.size()), 9);
     EXPECT_EQ(r.nSurfaceDropped, 0);
+}
+
+
+TEST(ghostCells, viscousShearMovesNoMassButGivesTheFluidTheWallShear)
+{
+    // The shear of the test above with ghostShear viscous (the default):
+    // the ghost cells under the face move rigidly (no velocity along the
+    // shell, so no mass flux through the body), and the face between each
+    // of them and its fluid neighbour carries the viscous flux of the
+    // mirrored velocity a (x_g - xf): the fluid cell gains
+    // nu a (x_g - xf)/h^2 per unit volume, the ghost cell loses as much,
+    // and the sources sum to zero over the mesh
+    faceShear s;
+    const scalar nu = 0.1, h = 1.0/24;
+    fictitiousDomain fd(s.mesh, ghostCells());
+    ASSERT_TRUE(fd.hasWallShearSource());
+    const fictitiousDomain::result r = fd.solve(s.U, s.bodies, 0.01)[0];
+    const volScalarField nuField
+    (
+        IOobject("nu", s.mesh.time().timeName(), s.mesh),
+        s.mesh,
+        dimensionedScalar("nu", dimViscosity, nu)
+    );
+    const tmp<volVectorField> tsrc = fd.wallShearSource(nuField);
+    const volVectorField& src = tsrc();
+
+    const labelList under(s.cellsUnderFace(r));
+    for (const label g : under)
+    {
+        const point& x = s.mesh.C()[g];
+        EXPECT_NEAR(s.U[g].y(), 0, 1e-12) << str(x);
+        const scalar expected = nu*s.a*(x.x() - s.xf)/sqr(h);
+        EXPECT_LT(expected, 0);
+        EXPECT_NEAR(src[g].y(), -expected, 1e-9*mag(expected)) << str(x);
+        // Its fluid neighbour across the face
+        const label c = s.mesh.findCell(x + vector(h, 0, 0));
+        ASSERT_GE(c, 0);
+        EXPECT_NEAR(src[c].y(), expected, 1e-9*mag(expected)) << str(x);
+    }
+    EXPECT_GE(label(under.size()), 9);
+    EXPECT_LT(mag(gSum(s.mesh.V()*src.primitiveField())), 1e-14);
 }
 
 
 TEST(ghostCells, curvedProfileIsCarriedThroughTheWallWithTheQuadraticFit)
 {
-    // The face of the test above with a profile that bends, U_y = a s +
+    // The face of the tests above with a profile that bends, U_y = a s +
     // c s^2 (s = x - xf), as in a gap between two walls or a boundary
     // layer thinner than the fit. With ghostFitOrder 2 the ghost cells
     // under the face take the parabola continued through the wall, a (-d)
-    // + c d^2 (d = xf - x), to 2 % (the fit's regularisation: 1.3 % here); the
-    // linear fit (ghostFitOrder 1) reads a wall slope 10 % or more too low
+    // + c d^2 (d = xf - x), to 2 % (the fit's regularisation); the linear
+    // fit (ghostFitOrder 1) reads a wall slope 10 % or more too low
     faceShear s;
     const scalar c = -2;
     forAll(s.U, k)
@@ -204,21 +273,13 @@ TEST(ghostCells, curvedProfileIsCarriedThroughTheWallWithTheQuadraticFit)
     const volVectorField U0(s.U);
     for (const label order : {2, 1})
     {
-        dictionary dict(ghostCells());
-        dict.add("ghostShear", word("mirrored"));
-        dict.add("ghostFitOrder", order);
-        fictitiousDomain fd(s.mesh, dict);
         volVectorField U(U0);
-        const fictitiousDomain::result r = fd.solve(U, s.bodies, 0.01)[0];
-        label checked = 0;
-        for (const label g : r.interiorCells)
+        const fictitiousDomain::result r =
+            solveMirrored(s.mesh, U, s.bodies, order);
+        const labelList under(s.cellsUnderFace(r));
+        for (const label g : under)
         {
             const point& x = s.mesh.C()[g];
-            if (!s.underFace(x))
-            {
-                continue;
-            }
-            ++checked;
             const scalar d = s.xf - x.x();
             const scalar exact = -s.a*d + c*sqr(d);
             if (order == 2)
@@ -230,7 +291,7 @@ TEST(ghostCells, curvedProfileIsCarriedThroughTheWallWithTheQuadraticFit)
                 EXPECT_GT(U[g].y(), 0.9*exact) << str(x);
             }
         }
-        EXPECT_GE(checked, 9);
+        EXPECT_GE(label(under.size()), 9);
     }
 }
 
@@ -258,17 +319,14 @@ TEST(ghostCells, gapProfileVanishesAtBothWallsWithTheQuadraticFit)
     }
     for (const label order : {2, 1})
     {
-        dictionary dict(ghostCells());
-        dict.add("ghostShear", word("mirrored"));
-        dict.add("ghostFitOrder", order);
-        fictitiousDomain fd(gap.mesh, dict);
         volVectorField U(gap.tU());
         forAll(U, c)
         {
             const scalar x = gap.mesh.C()[c].x();
             U[c] = vector(0, x > face && x < face + g ? profile(x) : 0, 0);
         }
-        const fictitiousDomain::result r = fd.solve(U, gap.bodies, 0.01)[0];
+        const fictitiousDomain::result r =
+            solveMirrored(gap.mesh, U, gap.bodies, order);
         label checked = 0;
         for (const label c : r.interiorCells)
         {
@@ -294,52 +352,6 @@ TEST(ghostCells, gapProfileVanishesAtBothWallsWithTheQuadraticFit)
         }
         EXPECT_EQ(checked, 4);
     }
-}
-
-
-TEST(ghostCells, viscousShearMovesNoMassButGivesTheFluidTheWallShear)
-{
-    // The shear of the test above with ghostShear viscous (the default):
-    // the ghost cells under the face move rigidly (no velocity along the
-    // shell, so no mass flux through the body), and the face between each
-    // of them and its fluid neighbour carries the viscous flux of the
-    // mirrored velocity a (x_g - xf): the fluid cell gains
-    // nu a (x_g - xf)/h^2 per unit volume, the ghost cell loses as much,
-    // and the sources sum to zero over the mesh
-    faceShear s;
-    const scalar nu = 0.1, h = 1.0/24;
-    fictitiousDomain fd(s.mesh, ghostCells());
-    ASSERT_TRUE(fd.hasWallShearSource());
-    const fictitiousDomain::result r = fd.solve(s.U, s.bodies, 0.01)[0];
-    const volScalarField nuField
-    (
-        IOobject("nu", s.mesh.time().timeName(), s.mesh),
-        s.mesh,
-        dimensionedScalar("nu", dimViscosity, nu)
-    );
-    const tmp<volVectorField> tsrc = fd.wallShearSource(nuField);
-    const volVectorField& src = tsrc();
-
-    label checked = 0;
-    for (const label g : r.interiorCells)
-    {
-        const point& x = s.mesh.C()[g];
-        if (!s.underFace(x))
-        {
-            continue;
-        }
-        ++checked;
-        EXPECT_NEAR(s.U[g].y(), 0, 1e-12) << str(x);
-        const scalar expected = nu*s.a*(x.x() - s.xf)/sqr(h);
-        EXPECT_LT(expected, 0);
-        EXPECT_NEAR(src[g].y(), -expected, 1e-9*mag(expected)) << str(x);
-        // Its fluid neighbour across the face
-        const label c = s.mesh.findCell(x + vector(h, 0, 0));
-        ASSERT_GE(c, 0);
-        EXPECT_NEAR(src[c].y(), expected, 1e-9*mag(expected)) << str(x);
-    }
-    EXPECT_GE(checked, 9);
-    EXPECT_LT(mag(gSum(s.mesh.V()*src.primitiveField())), 1e-14);
 }
 
 

@@ -240,9 +240,10 @@ void Foam::fictitiousDomain::solveGhostBody
     // (the fit then tends to the linear one). It takes as a datum the
     // surface of another body that the ray p + t n meets within R, with
     // that body's rigid velocity there: in a gap narrower than R the
-    // profile then vanishes at both walls (a gap of two cells passed 25 %
-    // too much flow without it, 1 % with it, in a one-dimensional model of
-    // the coupling: benchmarks/frozenArrays)
+    // profile then vanishes at both walls (in a one-dimensional model of
+    // the coupling, benchmarks/frozenArrays/gapModel, a gap of two cells
+    // passes 29 % too much flow without it, 0.0 % with it; 50 % with
+    // ghostFitOrder 1)
     const auto fit = [&]
     (
         const point& p,
@@ -290,8 +291,8 @@ void Foam::fictitiousDomain::solveGhostBody
             const vector q = xData[k] - p;
             const scalar sk = n & q;
             const scalar r2 = magSqr(q);
-            const scalar kappa =
-                quadratic && k == nData ? wallWeight : sqr(1 - r2/R2);
+            // (nData, the spare slot, exists with ghostFitOrder 2 only)
+            const scalar kappa = k == nData ? wallWeight : sqr(1 - r2/R2);
             cells.append(k);
             alpha.append(kappa*sk);
             beta.append(kappa*sk*sk);
@@ -525,8 +526,9 @@ void Foam::fictitiousDomain::solveGhostBody
         if (quadratic)
         {
             // The parabola continued through the wall, exact for a gap's
-            // Poiseuille profile (a linear one there leaves the wall 0.1 to
-            // 0.5 of the gap's flow too weak: benchmarks/frozenArrays)
+            // Poiseuille profile (with the line, ghostFitOrder 1, a gap of
+            // 2, 3, 4 cells passes 50, 22, 12 % too much flow:
+            // benchmarks/frozenArrays/gapModel)
             profile += sqr(d)*(cq - (cq & n)*n);
         }
         if (twoD_)
