@@ -47,8 +47,6 @@ void Foam::granularSystem::updateParticleData()
 {
     const label n = size();
     radius_.setSize(n);
-    Fext_.setSize(n, Zero);
-    Text_.setSize(n, Zero);
     Deq_.setSize(n);
     sphereRadius_.setSize(n);
 
@@ -77,7 +75,7 @@ void Foam::granularSystem::updateParticleData()
         }
         p.setRotation(rotationOn_);
     }
-    moving_.transfer(moving);
+    integrator_.setParticles(std::move(moving), n);
     if (n)
     {
         if
@@ -153,31 +151,6 @@ void Foam::granularSystem::updateParticleData()
 }
 
 
-void Foam::granularSystem::wrapPeriodicDirections(rigidParticle& p) const
-{
-    point x = p.position();
-    bool moved = false;
-    for (direction d = 0; d < 3; ++d)
-    {
-        if (!settings_.periodic()[d])
-        {
-            continue;
-        }
-        const scalar lo = settings_.domain().min()[d];
-        const scalar L = settings_.domain().span()[d];
-        if (x[d] < lo || x[d] >= lo + L)
-        {
-            x[d] -= L*std::floor((x[d] - lo)/L);
-            moved = true;
-        }
-    }
-    if (moved)
-    {
-        p.setPosition(x);
-    }
-}
-
-
 void Foam::granularSystem::subStep
 (
     const scalar dt,
@@ -186,46 +159,16 @@ void Foam::granularSystem::subStep
     const bool contacts
 )
 {
-    // (1) The previous sub-step's second half kick (same arithmetic as a
-    // pass of its own, one sweep over the particles fewer), the first half
-    // kick and drift, the start of the force sum, and whether the Verlet
-    // list must be rebuilt. Fixed particles take no part: they never move
-    // and carry no force.
-    const bool checkList = contactsOn_ && search_.built(size());
-    const bool weight = magSqr(g_) > 0;
-    const label nMoving = moving_.size();
-    // The records are read in order, and each fills several cache lines:
-    // they are requested a few particles ahead, so that the memory works
-    // while the arithmetic does (10^5 free-falling spheres: 6.7 s -> 5.0 s)
-    for (label k = 0; k < nMoving; ++k)
-    {
-        if (k + ahead < nMoving)
-        {
-            prefetchParticle(moving_[k + ahead]);
-        }
-        const label i = moving_[k];
-        rigidParticle& p = particles_[i];
-        if (finishPrevious)
-        {
-            p.kick(dt);
-        }
-        p.kickDrift(dt);
-        wrapPeriodic(p);
-        p.clearForces();
-        if (weight)
-        {
-            p.addForce(p.mass()*g_);
-        }
-        if (externalForcesOn_)
-        {
-            p.addForce(Fext_[i]);
-            p.addTorque(Text_[i]);
-        }
-        if (checkList)
-        {
-            search_.noteMoved(i, p.position());
-        }
-    }
+    // (1) The previous sub-step's second half kick, the first half kick
+    // and drift, the start of the force sum, and whether the Verlet list
+    // must be rebuilt (Foam::velocityVerletIntegrator)
+    integrator_.openSubStep
+    (
+        particles_,
+        dt,
+        finishPrevious,
+        contactsOn_ && search_.built(size()) ? &search_ : nullptr
+    );
 
     // (2) Contacts: walls, then pairs
     if (contacts)
@@ -255,18 +198,7 @@ void Foam::granularSystem::subStep
     {
         return;
     }
-    scalar E = 0;
-    for (label k = 0; k < nMoving; ++k)
-    {
-        if (k + ahead < nMoving)
-        {
-            prefetchParticle(moving_[k + ahead]);
-        }
-        rigidParticle& p = particles_[moving_[k]];
-        p.kick(dt);
-        E += p.kineticEnergy();
-    }
-    stats_.kineticEnergy = E;
+    stats_.kineticEnergy = integrator_.closeStep(particles_, dt);
 }
 
 
@@ -297,14 +229,13 @@ Foam::granularSystem::granularSystem
     wallMaterial_(),
     laws_(),
     settings_(),
-    g_(Zero),
     effects_(effects),
     collisionMode_(sceneEffects::collisionMode::on),
     contactsOn_(true),
     rotationOn_(effects_.settle("rotation", true, "default")),
-    externalForcesOn_(false),
     dtMax_(VGREAT),
-    search_()
+    search_(),
+    integrator_(settings_)
 {
     // A misspelt keyword would leave a default in force or be ignored
     knownKeywords::require(particleDict, wordList({"shapes", "materials"}));
@@ -482,19 +413,11 @@ Foam::vector Foam::granularSystem::momentum() const
 }
 
 
-void Foam::granularSystem::clearExternalForces()
-{
-    Fext_ = Zero;
-    Text_ = Zero;
-    externalForcesOn_ = false;
-}
-
-
 Foam::label Foam::granularSystem::evolve(const scalar Deltat)
 {
     stats_ = statistics();
 
-    if (moving_.empty())
+    if (integrator_.moving().empty())
     {
         // Nothing moves (no particle, or all fixed): no granular work
         return 0;
@@ -514,10 +437,7 @@ Foam::label Foam::granularSystem::evolve(const scalar Deltat)
         return 1;
     }
 
-    const label n =
-        dtMax_ < VGREAT
-      ? max(label(1), label(std::ceil(Deltat/dtMax_*(1 - 1e-12))))
-      : 1;
+    const label n = velocityVerletIntegrator::nSubSteps(Deltat, dtMax_);
     if (settings_.subCycleInReach() && contactsOn_ && n > 1)
     {
         if (evolveInReach(Deltat, n))

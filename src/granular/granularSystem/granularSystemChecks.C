@@ -187,7 +187,7 @@ void Foam::granularSystem::checkStart(const fileName& file)
 
 void Foam::granularSystem::checkHealth(const scalar time) const
 {
-    for (const label i : moving_)
+    for (const label i : integrator_.moving())
     {
         const rigidParticle& p = particles_[i];
         if

@@ -461,15 +461,15 @@ const Foam::vector& Foam::granularSystem::readGravity
                 effects_.contradiction("gravity", why.str());
             }
         }
-        g_ = Zero;
-        return g_;
+        integrator_.setGravity(Zero);
+        return integrator_.gravity();
     }
     if (!present)
     {
         effects_.contradiction("gravity", "the case has no constant/g");
     }
-    g_ = uniformDimensionedVectorField(header).value();
-    return g_;
+    integrator_.setGravity(uniformDimensionedVectorField(header).value());
+    return integrator_.gravity();
 }
 
 

@@ -25,16 +25,16 @@ Foam::scalar Foam::granularSystem::stepReach(const scalar Deltat)
     scalar maxReach = 0;
     reach_.setSize(size());
     reach_ = 0;
-    for (const label i : moving_)
+    for (const label i : integrator_.moving())
     {
         const rigidParticle& p = particles_[i];
         vector a = Zero;
         if (p.motion() == rigidParticle::motionKind::free)
         {
-            a = g_;
-            if (externalForcesOn_)
+            a = integrator_.gravity();
+            if (integrator_.externalForcesOn())
             {
-                a += Fext_[i]/p.mass();
+                a += integrator_.externalForce(i)/p.mass();
             }
         }
         reach_[i] = mag(p.velocity())*Deltat + 0.5*mag(a)*sqr(Deltat);
@@ -51,7 +51,7 @@ bool Foam::granularSystem::contactsPossible(const scalar Deltat)
     const scalar maxReach = stepReach(Deltat);
 
     // A wall a particle can reach
-    for (const label i : moving_)
+    for (const label i : integrator_.moving())
     {
         if (particles_[i].motion() != rigidParticle::motionKind::free)
         {
@@ -102,7 +102,7 @@ bool Foam::granularSystem::evolveInReach(const scalar Deltat, const label n)
     }
     outOfReach_.setSize(size());
     outOfReach_ = false;
-    for (const label i : moving_)
+    for (const label i : integrator_.moving())
     {
         outOfReach_[i] = true;
     }
@@ -115,7 +115,7 @@ bool Foam::granularSystem::evolveInReach(const scalar Deltat, const label n)
             outOfReach_[j] = false;
         }
     }
-    for (const label i : moving_)
+    for (const label i : integrator_.moving())
     {
         if
         (
@@ -139,14 +139,14 @@ bool Foam::granularSystem::evolveInReach(const scalar Deltat, const label n)
         }
     }
     inReach_.clear();
-    for (const label i : moving_)
+    for (const label i : integrator_.moving())
     {
         if (!outOfReach_[i])
         {
             inReach_.append(i);
         }
     }
-    if (inReach_.size() == moving_.size())
+    if (inReach_.size() == integrator_.moving().size())
     {
         // Every particle in reach: the whole scene's contact work, as with
         // subCycling all
@@ -157,7 +157,7 @@ bool Foam::granularSystem::evolveInReach(const scalar Deltat, const label n)
     // The start of the step, to redo it if a particle in reach travels
     // farther than allowed
     atStart_.clear();
-    for (const label i : moving_)
+    for (const label i : integrator_.moving())
     {
         atStart_.push_back(particles_[i]);
     }
@@ -171,9 +171,10 @@ bool Foam::granularSystem::evolveInReach(const scalar Deltat, const label n)
     {
         subStep(dt, k > 0, k == n - 1, true);
         bool tooFar = false;
-        for (label m = 0; m < moving_.size() && !tooFar; ++m)
+        const labelList& moving = integrator_.moving();
+        for (label m = 0; m < moving.size() && !tooFar; ++m)
         {
-            const label i = moving_[m];
+            const label i = moving[m];
             tooFar =
                 !outOfReach_[i]
              && magSqr
@@ -186,9 +187,9 @@ bool Foam::granularSystem::evolveInReach(const scalar Deltat, const label n)
         }
         if (tooFar)
         {
-            forAll(moving_, m)
+            forAll(moving, m)
             {
-                const label i = moving_[m];
+                const label i = moving[m];
                 particles_[i] = atStart_[m];
                 search_.noteMoved(i, particles_[i].position());
             }
