@@ -100,39 +100,4 @@ bool Foam::cellCentreSearch::reaches(const point& x, const scalar r) const
 }
 
 
-Foam::List<Foam::vector> Foam::cellCentreSearch::periodicShifts
-(
-    const boundBox& bb,
-    const vector& period,
-    const point& x,
-    const scalar r
-)
-{
-    // Every sum of -1, 0 or +1 period per periodic direction, kept when
-    // the ball about x - s reaches the box
-    DynamicList<vector> shifts(1, vector::zero);
-    for (direction d = 0; d < vector::nComponents; ++d)
-    {
-        if (period[d] <= 0)
-        {
-            continue;
-        }
-        const label n = shifts.size();
-        for (const scalar sign : {-1.0, 1.0})
-        {
-            for (label i = 0; i < n; ++i)
-            {
-                vector s = shifts[i];
-                s[d] += sign*period[d];
-                if (ballReaches(bb, x - s, r))
-                {
-                    shifts.append(s);
-                }
-            }
-        }
-    }
-    return List<vector>(std::move(shifts));
-}
-
-
 // ************************************************************************* //

@@ -60,7 +60,7 @@ Foam::scalar Foam::fictitiousDomain::reach() const
     // surface stencils: their radius, and two cells for the inside search
     return treatment_ == surfaceTreatment::ghostCells
         ? ghostFitRadius_
-        : max(scalar(2), stencilRadius_);
+        : max(scalar(2), stencils_.radius());
 }
 
 
@@ -126,16 +126,16 @@ Foam::fictitiousDomain::fictitiousDomain
             "ghostShear", dict, ghostShearModel::viscous
         )
     ),
-    surfacePoints_(dict.getOrDefault<Switch>("surfacePoints", true)),
-    surfaceSpacing_(dict.getOrDefault<scalar>("surfacePointSpacing", 1)),
-    stencilRadius_(dict.getOrDefault<scalar>("surfaceStencilRadius", 1.2)),
-    retraction_(dict.getOrDefault<scalar>("surfacePointRetraction", 0)),
+    stencils_
+    (
+        dict, mesh.nSolutionD() == 2, mesh.bounds().centre().z()
+    ),
     tolerance_(dict.getOrDefault<scalar>("tolerance", 1e-10)),
     maxIterations_(dict.getOrDefault<label>("maxIterations", 1000)),
     multipliers_(tolerance_, maxIterations_, mesh.nSolutionD() == 2),
     search_(mesh),
     twoD_(mesh.nSolutionD() == 2),
-    period_(Zero),
+    images_(search_, mesh.bounds()),
     owners_(mesh.nCells()),
     source_
     (
@@ -191,13 +191,6 @@ Foam::fictitiousDomain::fictitiousDomain
     // Before anything is solved or written: a mesh the coupling is not
     // validated on stops here, not by diverging later
     hexCellCheck::require(mesh, "DLM/FD");
-    if (!(surfaceSpacing_ > 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << "surfacePointSpacing = " << surfaceSpacing_ << " is not"
-            << " allowed; it must be > 0 (in cell sizes)"
-            << exit(FatalIOError);
-    }
     if (!(ghostFitRadius_ >= 1.5))
     {
         FatalIOErrorInFunction(dict)
@@ -211,19 +204,6 @@ Foam::fictitiousDomain::fictitiousDomain
             << "ghostFitOrder = " << ghostFitOrder_ << " is not"
             << " allowed; it must be 1 (s a_t) or 2 (s a_t + s^2 c_t)"
             << exit(FatalIOError);
-    }
-    if (!(stencilRadius_ >= 1))
-    {
-        FatalIOErrorInFunction(dict)
-            << "surfaceStencilRadius = " << stencilRadius_ << " is not"
-            << " allowed; it must be >= 1 (in cell sizes)"
-            << exit(FatalIOError);
-    }
-    if (!(retraction_ >= 0 && retraction_ < 1))
-    {
-        FatalIOErrorInFunction(dict)
-            << "surfacePointRetraction = " << retraction_ << " is not"
-            << " allowed; 0 <= it < 1 (in cell sizes)" << exit(FatalIOError);
     }
     if (!(tolerance_ > 0 && tolerance_ < 1))
     {
@@ -478,22 +458,6 @@ void Foam::fictitiousDomain::rewindToStepStart()
 }
 
 
-void Foam::fictitiousDomain::setPeriodicity(const vector& period)
-{
-    for (direction d = 0; d < vector::nComponents; ++d)
-    {
-        if (period[d] < 0)
-        {
-            FatalErrorInFunction
-                << "period " << period << " is not allowed: each component"
-                << " must be > 0, or 0 for a direction that is not periodic"
-                << exit(FatalError);
-        }
-    }
-    period_ = period;
-}
-
-
 Foam::scalarList Foam::fictitiousDomain::cellSizes
 (
     const UList<body>& bodies,
@@ -510,13 +474,7 @@ Foam::scalarList Foam::fictitiousDomain::cellSizes
     {
         const body& B = bodies[b];
         const scalar rb = B.shape->boundingRadius();
-        const List<vector> shifts
-        (
-            cellCentreSearch::periodicShifts
-            (
-                mesh_.bounds(), period_, B.centre, rb
-            )
-        );
+        const List<vector> shifts(images_.shifts(B.centre, rb));
         for (const vector& s : shifts)
         {
             near.clear();
@@ -559,42 +517,12 @@ Foam::scalarList Foam::fictitiousDomain::cellSizes
         h[b] = cellSize(sumV[b]/count[b]);
 
         // A body must not meet itself across a period
-        const scalar reach =
-            bodies[b].shape->boundingRadius() + this->reach()*h[b];
-        for (direction d = 0; d < vector::nComponents; ++d)
-        {
-            if (period_[d] > 0 && !(2*reach < period_[d]))
-            {
-                FatalErrorInFunction
-                    << "particle " << b << ": its bounding radius with the"
-                    << " stencils, " << reach << " m, is not below half the"
-                    << " period " << period_[d] << " m in direction "
-                    << label(d) << "; the periodic box must be longer than"
-                    << " twice that" << exit(FatalError);
-            }
-        }
+        images_.checkClearance
+        (
+            b, bodies[b].shape->boundingRadius() + this->reach()*h[b]
+        );
     }
     return h;
-}
-
-
-Foam::List<Foam::vector> Foam::fictitiousDomain::nearShifts
-(
-    const point& x,
-    const scalar r
-) const
-{
-    const List<vector> all =
-        cellCentreSearch::periodicShifts(mesh_.bounds(), period_, x, r);
-    DynamicList<vector> near(all.size());
-    for (const vector& s : all)
-    {
-        if (search_.reaches(x - s, r))
-        {
-            near.append(s);
-        }
-    }
-    return List<vector>(std::move(near));
 }
 
 

@@ -11,111 +11,18 @@ License
 
 Description
     The fluidStencil surface treatment of Foam::fictitiousDomain: the
-    candidate cells and surface stencils, the collocation points with
-    their least-squares weights, and each body's multipliers by
-    conjugate gradients with the rigid modes (Sherman-Morrison-Woodbury).
+    candidate cells and surface stencils on this rank, the collocation
+    points gathered from the ranks with their least-squares weights
+    (Foam::surfaceStencils), and each body's multipliers
+    (Foam::multiplierSolver).
 
 \*---------------------------------------------------------------------------*/
 
 #include "fictitiousDomain.H"
 #include "particleGeometry.H"
-#include "smallDenseSolve.H"
 #include "fictitiousDomainParts.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-bool Foam::fictitiousDomain::fitWeights
-(
-    const point& p,
-    const UList<point>& centres,
-    const scalar h,
-    scalarList& weights
-) const
-{
-    // u(c) ~ a + G.(x_c - p): weights of a by linear least squares,
-    // w = X (X^T X)^-1 e_0, lengths scaled by the cell size
-    const label nCoeff = twoD_ ? 3 : 4;
-    if (centres.size() < nCoeff)
-    {
-        return false;
-    }
-
-    List<scalarList> XtX(nCoeff, scalarList(nCoeff, scalar(0)));
-    List<scalarList> rows(centres.size(), scalarList(nCoeff));
-    forAll(centres, i)
-    {
-        const vector d = (centres[i] - p)/h;
-        rows[i][0] = 1;
-        rows[i][1] = d.x();
-        rows[i][2] = d.y();
-        if (!twoD_)
-        {
-            rows[i][3] = d.z();
-        }
-        for (label a = 0; a < nCoeff; ++a)
-        {
-            for (label b = 0; b < nCoeff; ++b)
-            {
-                XtX[a][b] += rows[i][a]*rows[i][b];
-            }
-        }
-    }
-    scalarList e0(nCoeff, scalar(0));
-    e0[0] = 1;
-    if (!smallDenseSolve(XtX, e0))
-    {
-        return false;
-    }
-    weights.setSize(centres.size());
-    forAll(centres, i)
-    {
-        scalar w = 0;
-        for (label a = 0; a < nCoeff; ++a)
-        {
-            w += rows[i][a]*e0[a];
-        }
-        weights[i] = w;
-    }
-    return true;
-}
-
-
-void Foam::fictitiousDomain::surfacePointsOf
-(
-    const body& B,
-    const scalar h,
-    DynamicList<point>& pts
-) const
-{
-    pts.clear();
-    if (!surfacePoints_)
-    {
-        return;
-    }
-    const scalar zPlane = twoD_ ? mesh_.bounds().centre().z() : 0;
-    particleGeometry::surfacePoints
-    (
-        *B.shape, B.centre, B.R, surfaceSpacing_*h, zPlane, pts
-    );
-    if (retraction_ > 0)
-    {
-        // Towards the centre by retraction h (in the plane in 2D)
-        for (point& p : pts)
-        {
-            vector d = p - B.centre;
-            if (twoD_)
-            {
-                d.z() = 0;
-            }
-            const scalar r = mag(d);
-            if (r > VSMALL)
-            {
-                p -= (min(retraction_*h, 0.5*r)/r)*d;
-            }
-        }
-    }
-}
-
 
 void Foam::fictitiousDomain::findCandidates
 (
@@ -140,7 +47,7 @@ void Foam::fictitiousDomain::findCandidates
         const particleShape& shape = *B.shape;
         const scalar rb = shape.boundingRadius();
         const scalar h = cand.h[b];
-        cand.shifts[b] = nearShifts(B.centre, rb + reach()*h);
+        cand.shifts[b] = images_.reaching(B.centre, rb + reach()*h);
         const List<vector>& shifts = cand.shifts[b];
         if (shifts.empty())
         {
@@ -172,7 +79,7 @@ void Foam::fictitiousDomain::findCandidates
         // body's surface is, without making those cells move rigidly
         // (a stencil across the surface did: the body acted half a cell
         // thicker)
-        surfacePointsOf(B, h, pts);
+        stencils_.points(*B.shape, B.centre, B.R, h, pts);
         cand.stencils[b].setSize(pts.size());
         cand.stencilShifts[b].setSize(pts.size());
         forAll(pts, k)
@@ -183,7 +90,7 @@ void Foam::fictitiousDomain::findCandidates
                 near.clear();
                 search_.cellsInBall
                 (
-                    pts[k] - shifts[si], stencilRadius_*h, near
+                    pts[k] - shifts[si], stencils_.radius()*h, near
                 );
                 for (const label c : near)
                 {
@@ -255,7 +162,7 @@ void Foam::fictitiousDomain::assemble
 
     // Surface points: the fit of their stencils, gathered from the ranks
     DynamicList<point> surface;
-    surfacePointsOf(B, h, surface);
+    stencils_.points(*B.shape, B.centre, B.R, h, surface);
     List<DynamicList<label>> stencil(surface.size());
     forAll(parts, r)
     {
@@ -273,7 +180,7 @@ void Foam::fictitiousDomain::assemble
     forAll(surface, k)
     {
         const List<point> centres(UIndirectList<point>(s.centres, stencil[k]));
-        if (stencil[k].empty() || !fitWeights(surface[k], centres, h, w))
+        if (stencil[k].empty() || !stencils_.weights(surface[k], centres, h, w))
         {
             ++res.nSurfaceDropped;
             continue;

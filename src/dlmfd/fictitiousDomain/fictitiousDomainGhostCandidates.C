@@ -41,7 +41,7 @@ void Foam::fictitiousDomain::findGhostCandidates
         const body& B = bodies[b];
         const scalar rb = B.shape->boundingRadius();
         const scalar h = cand.h[b];
-        cand.shifts[b] = nearShifts(B.centre, rb + reach()*h);
+        cand.shifts[b] = images_.reaching(B.centre, rb + reach()*h);
         const List<vector>& shifts = cand.shifts[b];
         forAll(shifts, si)
         {
@@ -129,7 +129,7 @@ void Foam::fictitiousDomain::releasedDeviations
         }
         // The nearest periodic image of the cell to the body
         const vector arm =
-            cellCentreSearch::nearestImage(C[c] - bodies[o].centre, period_);
+            images_.nearest(C[c] - bodies[o].centre);
         const vector p = V[c]*deviation_[c];
         released[o] += p;
         moment[o] += arm ^ p;

@@ -202,9 +202,9 @@ void Foam::fictitiousDomain::solveGhostBody
         forAll(bodies, o)
         {
             const body& O = bodies[o];
-            const vector d = cellCentreSearch::nearestImage
+            const vector d = images_.nearest
             (
-                O.centre - X, period_
+                O.centre - X
             );
             if (o != bi && mag(d) < reachB + O.shape->boundingRadius())
             {

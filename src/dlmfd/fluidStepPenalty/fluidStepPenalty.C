@@ -12,6 +12,7 @@ License
 
 #include "fluidStepPenalty.H"
 #include "particleGeometry.H"
+#include "periodicImages.H"
 #include "fvmSup.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -127,7 +128,7 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::fluidStepPenalty::matrix
         const scalar r = B.shape->boundingRadius();
         const List<vector> shifts
         (
-            cellCentreSearch::periodicShifts(cellBox, period, B.centre, 2*r)
+            periodicImages::shifts(cellBox, period, B.centre, 2*r)
         );
         for (const vector& s : shifts)
         {
@@ -177,7 +178,7 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::fluidStepPenalty::matrix
             }
             forAll(bodies, b)
             {
-                const vector arm = cellCentreSearch::nearestImage
+                const vector arm = periodicImages::nearestImage
                 (
                     C[c] - bodies[b].centre, period
                 );

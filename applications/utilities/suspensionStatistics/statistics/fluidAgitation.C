@@ -12,7 +12,7 @@ License
 
 #include "fluidAgitation.H"
 #include "suspensionInput.H"
-#include "cellCentreSearch.H"
+#include "periodicImages.H"
 #include "particleGeometry.H"
 #include "volFields.H"
 
@@ -63,7 +63,7 @@ Foam::fluidAgitation::fluidAgitation
         // The periodic shifts of a ball of radius r about x
         const auto shifts = [&](const point& x, const scalar r)
         {
-            return cellCentreSearch::periodicShifts
+            return periodicImages::shifts
             (
                 mesh.bounds(), sc.period, x, r
             );
