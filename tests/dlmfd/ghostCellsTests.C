@@ -628,6 +628,18 @@ TEST(ghostCells, badSettingsAreRefusedNamingTheValidOnes)
     {
         EXPECT_NE(shear.find(name), std::string::npos) << shear;
     }
+    const std::string distance = testInput::errorOf([&]
+    {
+        fictitiousDomain fd
+        (
+            mesh,
+            testInput::parse("surfaceTreatment ghostCells; ghostFitDistance surfce;")
+        );
+    });
+    for (const char* name : {"surfce", "normal", "surface"})
+    {
+        EXPECT_NE(distance.find(name), std::string::npos) << distance;
+    }
     // The cut cells' solid fraction needs the fluid step's relaxation of
     // the time step under way, and a negative one is refused
     fictitiousDomain fd

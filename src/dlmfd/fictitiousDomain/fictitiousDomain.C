@@ -52,6 +52,14 @@ Foam::fictitiousDomain::ghostShearModelNames
 });
 
 
+const Foam::Enum<Foam::fictitiousDomain::ghostFitDistance>
+Foam::fictitiousDomain::ghostFitDistanceNames
+({
+    {ghostFitDistance::normal, "normal"},
+    {ghostFitDistance::surface, "surface"},
+});
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 Foam::scalar Foam::fictitiousDomain::reach() const
@@ -124,6 +132,13 @@ Foam::fictitiousDomain::fictitiousDomain
         ghostShearModelNames.getOrDefault
         (
             "ghostShear", dict, ghostShearModel::viscous
+        )
+    ),
+    fitDistance_
+    (
+        ghostFitDistanceNames.getOrDefault
+        (
+            "ghostFitDistance", dict, ghostFitDistance::normal
         )
     ),
     stencils_
@@ -234,7 +249,8 @@ Foam::wordList Foam::fictitiousDomain::keywords()
 {
     return wordList
     ({
-        "surfaceTreatment", "ghostFitRadius", "ghostFitOrder", "ghostCutCells",
+        "surfaceTreatment", "ghostFitRadius", "ghostFitOrder", "ghostFitDistance",
+        "ghostCutCells",
         "ghostShear",
         "surfacePoints", "surfacePointSpacing", "surfaceStencilRadius",
         "surfacePointRetraction", "tolerance", "maxIterations"

@@ -221,6 +221,21 @@ void Foam::fictitiousDomain::solveGhostBody
     // cells) at those of its ball's box, instead of every cell; the cells
     // kept are sorted, so that the sums run in the order of the cells as
     // before, bit for bit
+    // ghostFitDistance surface: each data cell's own distance to the
+    // body's surface (the largest face-plane distance for polyhedra),
+    // computed once per body; the wall datum's slot is set by each fit
+    scalarList sData;
+    if (fitDistance_ == ghostFitDistance::surface)
+    {
+        sData.setSize(xData.size());
+        for (label k = 0; k < nData; ++k)
+        {
+            sData[k] = particleGeometry::outsideDistanceBound
+            (
+                *B.shape, X, B.R, xData[k]
+            );
+        }
+    }
     const pointBins dataBins(xData, fitRadius/3);
     const pointBins cutBins(xCut, fitRadius/3);
     DynamicList<label> near;
@@ -259,12 +274,23 @@ void Foam::fictitiousDomain::solveGhostBody
         beta.clear();
         gamma.clear();
         near.clear();
+        // (with the surface distance a cell beyond an edge may count
+        // though it lies behind the plane through p: the whole ball)
         point lo, hi;
-        pointBins::capBox(p, fitRadius, n, 0.5*h, lo, hi);
+        if (sData.size())
+        {
+            lo = p - vector::uniform(fitRadius);
+            hi = p + vector::uniform(fitRadius);
+        }
+        else
+        {
+            pointBins::capBox(p, fitRadius, n, 0.5*h, lo, hi);
+        }
         dataBins.forInBox(lo, hi, [&](const label k)
         {
             const vector q = xData[k] - p;
-            if ((n & q) >= 0.5*h && magSqr(q) < R2)
+            const scalar sk = sData.size() ? sData[k] : (n & q);
+            if (sk >= 0.5*h && magSqr(q) < R2)
             {
                 near.append(k);
             }
@@ -282,6 +308,10 @@ void Foam::fictitiousDomain::solveGhostBody
         {
             xData[nData] = p + t*n;
             uData[nData] = uWall;
+            if (sData.size())
+            {
+                sData[nData] = t;
+            }
             near.append(nData);
             wallWeight = neighbourSurfaces::layerWeight(t, fitRadius, h, twoD_);
         }
@@ -289,7 +319,7 @@ void Foam::fictitiousDomain::solveGhostBody
         for (const label k : near)
         {
             const vector q = xData[k] - p;
-            const scalar sk = n & q;
+            const scalar sk = sData.size() ? sData[k] : (n & q);
             const scalar r2 = magSqr(q);
             // (nData, the spare slot, exists with ghostFitOrder 2 only)
             const scalar kappa = k == nData ? wallWeight : sqr(1 - r2/R2);
