@@ -44,12 +44,16 @@ scalar carried
 {
     scalarList w;
     fitted = st.weights(p, centres, h, w);
+    if (!fitted)
+    {
+        return GREAT;
+    }
     scalar u = 0;
     forAll(centres, i)
     {
         u += w[i]*(2.5 + (G & centres[i]));
     }
-    return fitted ? u : GREAT;
+    return u;
 }
 
 } // End anonymous namespace

@@ -250,8 +250,7 @@ Foam::wordList Foam::fictitiousDomain::keywords()
     return wordList
     ({
         "surfaceTreatment", "ghostFitRadius", "ghostFitOrder", "ghostFitDistance",
-        "ghostCutCells",
-        "ghostShear",
+        "ghostCutCells", "ghostShear",
         "surfacePoints", "surfacePointSpacing", "surfaceStencilRadius",
         "surfacePointRetraction", "tolerance", "maxIterations"
     });

@@ -202,10 +202,7 @@ void Foam::fictitiousDomain::solveGhostBody
         forAll(bodies, o)
         {
             const body& O = bodies[o];
-            const vector d = images_.nearest
-            (
-                O.centre - X
-            );
+            const vector d = images_.nearest(O.centre - X);
             if (o != bi && mag(d) < reachB + O.shape->boundingRadius())
             {
                 walls.add(*O.shape, X + d, O.R, O.V, O.omega);
@@ -215,12 +212,6 @@ void Foam::fictitiousDomain::solveGhostBody
         uData.append(Zero);
     }
 
-    // The data and cut cells in bins of a third of the fit radius: a fit
-    // looks at the cells of the bins that the box of its half-ball (the
-    // fluid side of its surface point) meets, a ghost cell's links (1.1
-    // cells) at those of its ball's box, instead of every cell; the cells
-    // kept are sorted, so that the sums run in the order of the cells as
-    // before, bit for bit
     // ghostFitDistance surface: each data cell's own distance to the
     // body's surface (the largest face-plane distance for polyhedra),
     // computed once per body; the wall datum's slot is set by each fit
@@ -236,6 +227,13 @@ void Foam::fictitiousDomain::solveGhostBody
             );
         }
     }
+
+    // The data and cut cells in bins of a third of the fit radius: a fit
+    // looks at the cells of the bins that the box of its half-ball (the
+    // fluid side of its surface point) meets, a ghost cell's links (1.1
+    // cells) at those of its ball's box, instead of every cell; the cells
+    // kept are sorted, so that the sums run in the order of the cells as
+    // before, bit for bit
     const pointBins dataBins(xData, fitRadius/3);
     const pointBins cutBins(xCut, fitRadius/3);
     DynamicList<label> near;
