@@ -19,6 +19,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "fictitiousDomain.H"
+#include "posedShape.H"
 #include "particleGeometry.H"
 #include "fictitiousDomainParts.H"
 
@@ -45,6 +46,7 @@ void Foam::fictitiousDomain::findCandidates
     {
         const body& B = bodies[b];
         const particleShape& shape = *B.shape;
+        const posedShape S(shape, B.centre, B.R);
         const scalar rb = shape.boundingRadius();
         const scalar h = cand.h[b];
         cand.shifts[b] = images_.reaching(B.centre, rb + reach()*h);
@@ -64,7 +66,7 @@ void Foam::fictitiousDomain::findCandidates
             for (const label c : near)
             {
                 const point x = C[c] + shifts[si];
-                if (particleGeometry::contains(shape, B.centre, B.R, x))
+                if (S.contains(x))
                 {
                     cand.interior[b].append(c);
                     cand.interiorShift[b].append(si);
@@ -95,7 +97,7 @@ void Foam::fictitiousDomain::findCandidates
                 for (const label c : near)
                 {
                     const point x = C[c] + shifts[si];
-                    if (!particleGeometry::contains(shape, B.centre, B.R, x))
+                    if (!S.contains(x))
                     {
                         st.append(c);
                         stShift.append(si);

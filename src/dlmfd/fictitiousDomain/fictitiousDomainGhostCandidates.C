@@ -19,7 +19,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "fictitiousDomain.H"
-#include "particleGeometry.H"
+#include "posedShape.H"
 #include "fictitiousDomainParts.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -39,6 +39,7 @@ void Foam::fictitiousDomain::findGhostCandidates
     forAll(bodies, b)
     {
         const body& B = bodies[b];
+        const posedShape S(*B.shape, B.centre, B.R);
         const scalar rb = B.shape->boundingRadius();
         const scalar h = cand.h[b];
         cand.shifts[b] = images_.reaching(B.centre, rb + reach()*h);
@@ -50,7 +51,7 @@ void Foam::fictitiousDomain::findGhostCandidates
             for (const label c : near)
             {
                 const point x = C[c] + shifts[si];
-                if (particleGeometry::contains(*B.shape, B.centre, B.R, x))
+                if (S.contains(x))
                 {
                     cand.interior[b].append(c);
                     cand.interiorShift[b].append(si);
@@ -65,6 +66,7 @@ void Foam::fictitiousDomain::findGhostCandidates
     forAll(bodies, b)
     {
         const body& B = bodies[b];
+        const posedShape S(*B.shape, B.centre, B.R);
         const scalar rb = B.shape->boundingRadius();
         const scalar h = cand.h[b];
         const scalar r = reach()*h;
@@ -77,10 +79,7 @@ void Foam::fictitiousDomain::findGhostCandidates
             for (const label c : near)
             {
                 const point x = C[c] + shifts[si];
-                const scalar bound = particleGeometry::outsideDistanceBound
-                (
-                    *B.shape, B.centre, B.R, x
-                );
+                const scalar bound = S.outsideDistanceBound(x);
                 if (bound >= 0 && bound < r)
                 {
                     fluid.append(c);

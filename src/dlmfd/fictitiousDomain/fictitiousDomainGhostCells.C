@@ -102,7 +102,7 @@ Description
 
 #include "fictitiousDomain.H"
 #include "pointBins.H"
-#include "particleGeometry.H"
+#include "posedShape.H"
 #include "rigidMomentumBalance.H"
 #include "fictitiousDomainParts.H"
 #include "neighbourSurfaces.H"
@@ -187,6 +187,7 @@ void Foam::fictitiousDomain::solveGhostBody
     }
     const label nIn = xIn.size();
     const point& X = B.centre;
+    const posedShape S(*B.shape, X, B.R);
     const scalar fitRadius = ghostFitRadius_*h;
     const scalar R2 = sqr(fitRadius);
     const bool quadratic = ghostFitOrder_ == 2;
@@ -221,10 +222,7 @@ void Foam::fictitiousDomain::solveGhostBody
         sData.setSize(xData.size());
         for (label k = 0; k < nData; ++k)
         {
-            sData[k] = particleGeometry::outsideDistanceBound
-            (
-                *B.shape, X, B.R, xData[k]
-            );
+            sData[k] = S.outsideDistanceBound(xData[k]);
         }
     }
 
@@ -386,7 +384,7 @@ void Foam::fictitiousDomain::solveGhostBody
         Q[j] = -cross(rj);
         point p;
         vector n;
-        const scalar sj = -particleGeometry::depth(*B.shape, X, B.R, xCut[j], p, n);
+        const scalar sj = -S.depth(xCut[j], p, n);
         if (!fit(p, n, cells, alpha, beta, gamma))
         {
             continue;
@@ -485,7 +483,7 @@ void Foam::fictitiousDomain::solveGhostBody
     {
         point p;
         vector n;
-        const scalar d = particleGeometry::depth(*B.shape, X, B.R, xIn[c], p, n);
+        const scalar d = S.depth(xIn[c], p, n);
         if (cutCells_ == cutCellForcing::solidFractionBothSides)
         {
             const scalar hn = h*(mag(n.x()) + mag(n.y()) + mag(n.z()));

@@ -11,7 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "fluidStepPenalty.H"
-#include "particleGeometry.H"
+#include "posedShape.H"
 #include "periodicImages.H"
 #include "fvmSup.H"
 
@@ -125,6 +125,7 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::fluidStepPenalty::matrix
     forAll(bodies, b)
     {
         const fictitiousDomain::body& B = bodies[b];
+        const posedShape S(*B.shape, B.centre, B.R);
         const scalar r = B.shape->boundingRadius();
         const List<vector> shifts
         (
@@ -150,10 +151,7 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::fluidStepPenalty::matrix
                 }
                 point p;
                 vector n;
-                const scalar depth = particleGeometry::depth
-                (
-                    *B.shape, B.centre, B.R, C[c] + s, p, n
-                );
+                const scalar depth = S.depth(C[c] + s, p, n);
                 if (depth > 0)
                 {
                     d2[c] = dist2;

@@ -16,6 +16,7 @@ License
 #include "circle.H"
 #include "convexPolyhedron.H"
 #include "edgeHashes.H"
+#include "posedShape.H"
 #include "mathematicalConstants.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -114,46 +115,7 @@ bool Foam::particleGeometry::contains
     const point& p
 )
 {
-    vector d = p - x;
-    if (shape.planar())
-    {
-        d.z() = 0;
-    }
-
-    if (const auto* s = isA<particleShapes::sphere>(shape))
-    {
-        return magSqr(d) < sqr(s->radius());
-    }
-    if (const auto* c = isA<particleShapes::circle>(shape))
-    {
-        return magSqr(d) < sqr(c->radius());
-    }
-    if (const auto* poly = isA<particleShapes::convexPolyhedron>(shape))
-    {
-        // Body frame: R^T d
-        const vector b = d & R;
-        const vectorField& normals = poly->faceNormals();
-        const scalarField& offsets = poly->faceOffsets();
-        forAll(normals, f)
-        {
-            if (shape.planar() && !isSideFace(normals[f]))
-            {
-                continue;
-            }
-            if ((normals[f] & b) >= offsets[f])
-            {
-                return false;
-            }
-        }
-        return true;
-    }
-
-    FatalErrorInFunction
-        << "shape " << shape.name() << " of type " << shape.type()
-        << " has no inside test for the fictitious domain; known types:"
-        << " sphere, circle and the convex polyhedra and polygons"
-        << exit(FatalError);
-    return false;
+    return posedShape(shape, x, R, "inside test").contains(p);
 }
 
 
@@ -167,61 +129,7 @@ Foam::scalar Foam::particleGeometry::depth
     vector& normal
 )
 {
-    vector d = p - x;
-    if (shape.planar())
-    {
-        d.z() = 0;
-    }
-
-    const auto* s = isA<particleShapes::sphere>(shape);
-    const auto* c = isA<particleShapes::circle>(shape);
-    if (s || c)
-    {
-        const scalar r = s ? s->radius() : c->radius();
-        const scalar m = mag(d);
-        // At the centre every direction is nearest: take any
-        normal = m > VSMALL*r ? d/m : vector(1, 0, 0);
-        foot = p + (r - m)*normal;
-        return r - m;
-    }
-    if (const auto* poly = isA<particleShapes::convexPolyhedron>(shape))
-    {
-        // Inside a convex polyhedron the nearest surface point lies on the
-        // nearest face plane
-        const vector b = d & R;
-        const vectorField& normals = poly->faceNormals();
-        const scalarField& offsets = poly->faceOffsets();
-        scalar best = GREAT;
-        label nearest = -1;
-        forAll(normals, f)
-        {
-            if (shape.planar() && !isSideFace(normals[f]))
-            {
-                continue;
-            }
-            const scalar gap = offsets[f] - (normals[f] & b);
-            if (gap < best)
-            {
-                best = gap;
-                nearest = f;
-            }
-        }
-        normal = R & normals[nearest];
-        if (shape.planar())
-        {
-            normal.z() = 0;
-            normal.normalise();
-        }
-        foot = p + best*normal;
-        return best;
-    }
-
-    FatalErrorInFunction
-        << "shape " << shape.name() << " of type " << shape.type()
-        << " has no depth function for the fictitious domain; known types:"
-        << " sphere, circle and the convex polyhedra and polygons"
-        << exit(FatalError);
-    return 0;
+    return posedShape(shape, x, R, "depth function").depth(p, foot, normal);
 }
 
 
@@ -233,9 +141,7 @@ Foam::scalar Foam::particleGeometry::outsideDistanceBound
     const point& p
 )
 {
-    point foot;
-    vector normal;
-    return -depth(shape, x, R, p, foot, normal);
+    return posedShape(shape, x, R, "depth function").outsideDistanceBound(p);
 }
 
 
