@@ -118,17 +118,16 @@ Foam::fictitiousDomain::fictitiousDomain
             "surfaceTreatment", dict, surfaceTreatment::fluidStencil
         )
     ),
+    ghostFitOrder_(dict.getOrDefault<label>("ghostFitOrder", 1)),
     // (a parabola, ghostFitOrder 2, needs two layers of cells along the
     // normal: 2.5 cells for it by default)
     ghostFitRadius_
     (
         dict.getOrDefault<scalar>
         (
-            "ghostFitRadius",
-            dict.getOrDefault<label>("ghostFitOrder", 1) == 2 ? 2.5 : 1.5
+            "ghostFitRadius", ghostFitOrder_ == 2 ? 2.5 : 1.5
         )
     ),
-    ghostFitOrder_(dict.getOrDefault<label>("ghostFitOrder", 1)),
     cutCells_
     (
         cutCellForcingNames.getOrDefault

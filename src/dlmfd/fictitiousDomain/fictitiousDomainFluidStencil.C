@@ -20,7 +20,6 @@ Description
 
 #include "fictitiousDomain.H"
 #include "posedShape.H"
-#include "particleGeometry.H"
 #include "fictitiousDomainParts.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //

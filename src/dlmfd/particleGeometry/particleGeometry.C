@@ -26,13 +26,6 @@ namespace
 
 using namespace Foam;
 
-//- A side face of a planar prism: its normal lies in the x-y plane
-bool isSideFace(const vector& n)
-{
-    return mag(n.z()) < 0.5;
-}
-
-
 //- Points along segment a-b at spacing <= h, a included, b excluded
 void segmentPoints
 (
@@ -207,7 +200,7 @@ void Foam::particleGeometry::surfacePoints
             // x-y plane make an edge of the polygon
             forAll(faces, f)
             {
-                if (!isSideFace(normals[f]))
+                if (!posedShape::isSideFace(normals[f]))
                 {
                     continue;
                 }
