@@ -87,7 +87,11 @@ void Foam::fictitiousDomain::findGhostCandidates
                     // A cell the surface cuts (its centre less than half a
                     // cell out) goes to the closest surface, which forces
                     // it (ghostCutCells full or solidFraction)
-                    if (cutCells_ != cutCellForcing::none && bound < 0.5*h)
+                    if
+                    (
+                        cutCells_ != cutCellForcing::none
+                     && bound < cutCellLimit*h
+                    )
                     {
                         owners_.claim(c, b, sqr(bound), false);
                     }

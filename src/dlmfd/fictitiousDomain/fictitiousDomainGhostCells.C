@@ -280,13 +280,13 @@ void Foam::fictitiousDomain::solveGhostBody
         }
         else
         {
-            pointBins::capBox(p, fitRadius, n, 0.5*h, lo, hi);
+            pointBins::capBox(p, fitRadius, n, cutCellLimit*h, lo, hi);
         }
         dataBins.forInBox(lo, hi, [&](const label k)
         {
             const vector q = xData[k] - p;
             const scalar sk = sData.size() ? sData[k] : (n & q);
-            if (sk >= 0.5*h && magSqr(q) < R2)
+            if (sk >= cutCellLimit*h && magSqr(q) < R2)
             {
                 near.append(k);
             }
