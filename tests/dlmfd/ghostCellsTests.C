@@ -437,12 +437,12 @@ TEST(ghostCells, withoutCutCellForcingNoFluidCellIsForcedNotEvenInATwoCellGap)
 
 TEST(ghostCells, withCutCellsOnlyCutFluidCellsAreForcedEvenInATwoCellGap)
 {
-    // ghostCutCells full and solidFractionBothSides: the
+    // ghostCutCells full, solidFractionBothSides and ramp: the
     // force density is zero in every cell more than half a cell out of both
     // cubes (the cells their surfaces do not cut), and the fluid there keeps
     // its velocity; in the gap, one row of cells lies 0.49 cells from a face
     // (cut, forced) and the other 0.51 (free)
-    for (const word cut : {"full", "solidFractionBothSides"})
+    for (const word cut : {"full", "solidFractionBothSides", "ramp"})
     {
         SCOPED_TRACE(cut);
         twoCubesInAGap g;

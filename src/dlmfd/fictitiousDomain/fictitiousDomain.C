@@ -40,6 +40,7 @@ Foam::fictitiousDomain::cutCellForcingNames
     {cutCellForcing::full, "full"},
     {cutCellForcing::solidFraction, "solidFraction"},
     {cutCellForcing::solidFractionBothSides, "solidFractionBothSides"},
+    {cutCellForcing::ramp, "ramp"},
 });
 
 
@@ -410,6 +411,7 @@ bool Foam::fictitiousDomain::needsFluidRelaxation() const
      && (
             cutCells_ == cutCellForcing::solidFraction
          || cutCells_ == cutCellForcing::solidFractionBothSides
+         || cutCells_ == cutCellForcing::ramp
         );
 }
 

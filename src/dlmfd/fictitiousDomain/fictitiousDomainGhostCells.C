@@ -404,6 +404,14 @@ void Foam::fictitiousDomain::solveGhostBody
                 min(max(0.5 - sj/hn, scalar(0)), scalar(1)), betaCut[j]
             );
         }
+        else if (cutCells_ == cutCellForcing::ramp)
+        {
+            share[j] = stepShare
+            (
+                min(max(1 - sj/(cutCellLimit*h), scalar(0)), scalar(1)),
+                betaCut[j]
+            );
+        }
         const tensor nn(n*n), tt(tensor::I - nn);
         scalar sa = 0, sb = 0;
         vector ua(Zero), ub(Zero), ra(Zero), rb(Zero);
