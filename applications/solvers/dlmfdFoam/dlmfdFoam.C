@@ -124,6 +124,13 @@ int main(int argc, char *argv[])
         #include "setDeltaT.H"
 
         ++runTime;
+        if (particles.valid())
+        {
+            particles->checkPressureCorrectors
+            (
+                laminarTransport.nu(), pimple.nCorrPISO()
+            );
+        }
 
         Info<< "Time = " << runTime.timeName() << nl << endl;
 

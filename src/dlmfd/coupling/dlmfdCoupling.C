@@ -292,6 +292,7 @@ Foam::dlmfdCoupling::dlmfdCoupling
         fd_.treatment(),
         fd_.search()
     ),
+    links_(mesh),
     Fh_(),
     Th_(),
     series_(),

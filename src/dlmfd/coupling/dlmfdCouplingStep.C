@@ -19,6 +19,7 @@ Description
 #include "dlmfdCoupling.H"
 #include "Time.H"
 #include "fvmDdt.H"
+#include "linear.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -107,6 +108,63 @@ void Foam::dlmfdCoupling::fluidStepMatrix(const fvVectorMatrix& UEqn)
     const scalarField A(UEqn.A()().primitiveField());
     const scalarField a(fvm::ddt(U)().A()().primitiveField());
     fd_.setFluidRelaxation(mesh_.time().deltaTValue()*(A - a));
+}
+
+
+void Foam::dlmfdCoupling::checkPressureCorrectors
+(
+    const volScalarField& nu,
+    const label nCorrectors
+) const
+{
+    if (nCorrectors >= 3)
+    {
+        return;
+    }
+    const scalar dt = mesh_.time().deltaTValue();
+    const surfaceScalarField nuf(linearInterpolate(nu));
+    const scalar viscous =
+        dt
+       *gMax
+        (
+            nuf.primitiveField()*sqr(mesh_.deltaCoeffs().primitiveField())
+        );
+    if (viscous > maxTwoCorrectorViscousNumber)
+    {
+        FatalErrorInFunction
+            << "time " << mesh_.time().timeName() << ": the viscous number"
+            << " nu dt/h^2 of this step is " << viscous << " (dt = " << dt
+            << " s) with system/fvSolution PIMPLE nCorrectors "
+            << nCorrectors << "; the coupled step is stable with fewer than"
+            << " three pressure correctors only up to "
+            << maxTwoCorrectorViscousNumber << " (a fixed body at Re 0.1"
+            << " diverged at 25: benchmarks/ringing). Set nCorrectors 3"
+            << " (measured stable to 142), or a time step of at most "
+            << dt*maxTwoCorrectorViscousNumber/viscous << " s (deltaT, or"
+            << " maxDeltaT with adjustTimeStep in system/controlDict)"
+            << exit(FatalError);
+    }
+}
+
+
+Foam::tmp<Foam::fvVectorMatrix> Foam::dlmfdCoupling::wallLinkMatrix
+(
+    const volVectorField& U,
+    const volScalarField& nu
+)
+{
+    clockTime clock;
+    const label n = granular_.size();
+    List<wallLinks::body> bodies(n);
+    for (label i = 0; i < n; ++i)
+    {
+        const rigidParticle& p = granular_.particle(i);
+        bodies[i] = {&p.shape(), p.position(), p.R(), p.velocity(), p.omega()};
+    }
+    links_.update(fd_.ghostOwner(), bodies, fd_.images());
+    tmp<fvVectorMatrix> m = links_.matrix(U, nu);
+    fdSeconds_ += clock.timeIncrement();
+    return m;
 }
 
 
@@ -237,6 +295,13 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
             }
         }
         fd_.addReleased(momentum, moment);
+    }
+    if (fd_.hasWallLinks())
+    {
+        // What the fluid gained at the links in its step, the bodies pay
+        List<vector> linkMomentum(n, Zero), linkMoment(n, Zero);
+        links_.momentum(U, dt, linkMomentum, linkMoment);
+        fd_.addReleased(linkMomentum, linkMoment);
     }
     const scalar commBefore = fd_.communicationSeconds();
     const List<fictitiousDomain::result>& res = fd_.solve(U, bodies, dt);

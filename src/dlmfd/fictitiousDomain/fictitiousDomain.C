@@ -50,6 +50,7 @@ Foam::fictitiousDomain::ghostShearModelNames
     {ghostShearModel::mirrored, "mirrored"},
     {ghostShearModel::rigid, "rigid"},
     {ghostShearModel::viscous, "viscous"},
+    {ghostShearModel::link, "link"},
 });
 
 

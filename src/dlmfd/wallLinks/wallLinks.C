@@ -1,0 +1,393 @@
+/*---------------------------------------------------------------------------*\
+  dlmfdFoam: DLM/FD particle-resolved simulation of particulate flows
+-------------------------------------------------------------------------------
+License
+    This file is part of dlmfdFoam, an extension of OpenFOAM.
+
+    dlmfdFoam is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by the
+    Free Software Foundation, either version 3 of the License, or (at your
+    option) any later version. See <http://www.gnu.org/licenses/>.
+
+\*---------------------------------------------------------------------------*/
+
+#include "wallLinks.H"
+#include "posedShape.H"
+#include "linear.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+
+// The smallest fraction of a link left to its fluid end: a cell centre
+// on the surface is held at the wall velocity, not divided by zero
+constexpr Foam::scalar minFraction = 1e-6;
+
+// Bisections of a link: 2^-40 of a cell, below round-off of the centres
+constexpr int nBisections = 40;
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::wallLinks::crossing
+(
+    const body& B,
+    const periodicImages& images,
+    const point& a,
+    const point& b,
+    vector& uWall,
+    vector& arm
+)
+{
+    // The body's image nearest the link's inside end
+    const point X = b - images.nearest(b - B.centre);
+    const posedShape S(*B.shape, X, B.R, "wall links");
+    scalar lo = 0, hi = 1;
+    if (S.contains(a))
+    {
+        // Both ends inside (the fluid cell is another body's): the fluid
+        // end is on the wall
+        hi = 0;
+    }
+    for (int i = 0; i < nBisections && hi > lo; ++i)
+    {
+        const scalar mid = 0.5*(lo + hi);
+        if (S.contains(a + mid*(b - a)))
+        {
+            hi = mid;
+        }
+        else
+        {
+            lo = mid;
+        }
+    }
+    const scalar t = 0.5*(lo + hi);
+    arm = a + t*(b - a) - X;
+    uWall = B.V + (B.omega ^ arm);
+    return max(t, minFraction);
+}
+
+
+Foam::label Foam::wallLinks::oppositeFace
+(
+    const label c,
+    const vector& S,
+    const scalarField& owner,
+    const PtrList<scalarField>& ownerNbr,
+    const PtrList<vectorField>& deltaNbr,
+    scalar& distance
+) const
+{
+    const vectorField& Sf = mesh_.faceAreas();
+    const vectorField& C = mesh_.cellCentres();
+    const labelUList& own = mesh_.faceOwner();
+    const labelUList& nei = mesh_.faceNeighbour();
+    const vector n = S/mag(S);
+    label best = -1;
+    scalar bestDot = -0.9;
+    for (const label f : mesh_.cells()[c])
+    {
+        const vector out = own[f] == c ? Sf[f] : -Sf[f];
+        const scalar dot = (out & n)/mag(out);
+        if (dot < bestDot)
+        {
+            bestDot = dot;
+            best = f;
+        }
+    }
+    if (best < 0)
+    {
+        return -1;
+    }
+    if (best < mesh_.nInternalFaces())
+    {
+        const label E = own[best] == c ? nei[best] : own[best];
+        distance = mag(C[E] - C[c]);
+        return owner[E] < 0 ? best : -1;
+    }
+    const label patchi = mesh_.boundaryMesh().whichPatch(best);
+    if (!ownerNbr.set(patchi))
+    {
+        return -1;
+    }
+    const label i = best - mesh_.boundaryMesh()[patchi].start();
+    distance = mag(deltaNbr[patchi][i]);
+    return ownerNbr[patchi][i] < 0 ? best : -1;
+}
+
+
+Foam::FixedList<Foam::scalar, 3> Foam::wallLinks::slopeWeights
+(
+    const scalar d,
+    const scalar hE,
+    const scalar a
+)
+{
+    // Along the line from the wall (y = 0) through c (y1 = d) to E (y2 =
+    // d + hE), the face at yf = d - a: the derivative there of the
+    // parabola through the three (Lagrange), or of the line through two
+    FixedList<scalar, 3> w;
+    if (!(hE > 0))
+    {
+        w[0] = -1/d;
+        w[1] = 1/d;
+        w[2] = 0;
+        return w;
+    }
+    const scalar y1 = d, y2 = d + hE, yf = d - a;
+    w[0] = ((yf - y1) + (yf - y2))/(y1*y2);
+    w[1] = (yf + (yf - y2))/(y1*(y1 - y2));
+    w[2] = (yf + (yf - y1))/(y2*(y2 - y1));
+    return w;
+}
+
+
+Foam::vector Foam::wallLinks::oppositeVelocity
+(
+    const link& L,
+    const vectorField& u,
+    const PtrList<vectorField>& uNbr
+) const
+{
+    const label fo = L.opposite;
+    if (fo < 0)
+    {
+        return Zero;
+    }
+    if (fo < mesh_.nInternalFaces())
+    {
+        const label o = mesh_.faceOwner()[fo];
+        return u[o == L.fluid ? mesh_.faceNeighbour()[fo] : o];
+    }
+    const label patchi = mesh_.boundaryMesh().whichPatch(fo);
+    return uNbr[patchi][fo - mesh_.boundaryMesh()[patchi].start()];
+}
+
+
+Foam::PtrList<Foam::vectorField> Foam::wallLinks::neighbourVelocities
+(
+    const volVectorField& U
+) const
+{
+    PtrList<vectorField> uNbr(mesh_.boundary().size());
+    forAll(mesh_.boundary(), patchi)
+    {
+        if (mesh_.boundary()[patchi].coupled())
+        {
+            uNbr.set
+            (
+                patchi,
+                U.boundaryField()[patchi].patchNeighbourField().ptr()
+            );
+        }
+    }
+    return uNbr;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::wallLinks::wallLinks(const fvMesh& mesh)
+:
+    mesh_(mesh)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::wallLinks::update
+(
+    const volScalarField& owner,
+    const UList<body>& bodies,
+    const periodicImages& images
+)
+{
+    links_.clear();
+    const vectorField& C = mesh_.C().primitiveField();
+    const vectorField& Sf = mesh_.Sf().primitiveField();
+    const vectorField& Cf = mesh_.Cf().primitiveField();
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const scalarField& body = owner.primitiveField();
+    PtrList<scalarField> ownerNbr(mesh_.boundary().size());
+    PtrList<vectorField> deltaNbr(mesh_.boundary().size());
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatch& p = mesh_.boundary()[patchi];
+        if (p.coupled())
+        {
+            ownerNbr.set
+            (
+                patchi,
+                owner.boundaryField()[patchi].patchNeighbourField().ptr()
+            );
+            deltaNbr.set(patchi, p.delta().ptr());
+        }
+    }
+
+    // A link from fluid cell c at a to the body cell's centre b through
+    // the face with outward area S (from c) and centre xf
+    auto add = [&](link& L, const point& a, const point& b, const label bi,
+        const vector& S, const point& xf)
+    {
+        const scalar t =
+            crossing(bodies[bi], images, a, b, L.uWall, L.arm);
+        const vector e = (b - a)/mag(b - a);
+        L.body = bi;
+        L.d = t*mag(b - a);
+        L.a = (xf - a) & e;
+        L.opposite =
+            oppositeFace(L.fluid, S, body, ownerNbr, deltaNbr, L.hE);
+        links_.append(L);
+    };
+
+    forAll(nei, f)
+    {
+        const label o = own[f], n = nei[f];
+        const bool oBody = body[o] >= 0, nBody = body[n] >= 0;
+        if (oBody == nBody)
+        {
+            continue;
+        }
+        link L;
+        L.face = f;
+        L.solid = oBody ? o : n;
+        L.fluid = oBody ? n : o;
+        add
+        (
+            L, C[L.fluid], C[L.solid], label(body[L.solid]),
+            oBody ? -Sf[f] : Sf[f], Cf[f]
+        );
+    }
+
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatch& p = mesh_.boundary()[patchi];
+        if (!p.coupled())
+        {
+            continue;
+        }
+        const labelUList& fc = p.faceCells();
+        const scalarField& bodyNbr = ownerNbr[patchi];
+        const vectorField& delta = deltaNbr[patchi];
+        forAll(fc, i)
+        {
+            // Only where this side is the fluid one: the other side's
+            // rank has the body's cell, whose row keeps the Laplacian
+            if (body[fc[i]] >= 0 || bodyNbr[i] < 0)
+            {
+                continue;
+            }
+            link L;
+            L.patch = patchi;
+            L.patchFace = i;
+            L.fluid = fc[i];
+            add
+            (
+                L, C[fc[i]], C[fc[i]] + delta[i], label(bodyNbr[i]),
+                p.Sf()[i], p.Cf()[i]
+            );
+        }
+    }
+}
+
+
+Foam::tmp<Foam::fvVectorMatrix> Foam::wallLinks::matrix
+(
+    const volVectorField& U,
+    const volScalarField& nu
+)
+{
+    tmp<fvVectorMatrix> tm
+    (
+        new fvVectorMatrix(U, U.dimensions()*dimVol/dimTime)
+    );
+    fvVectorMatrix& m = tm.ref();
+    const surfaceScalarField nuf(linearInterpolate(nu));
+    const surfaceScalarField K(nuf*mesh_.magSf());
+    const surfaceScalarField& dc = mesh_.deltaCoeffs();
+    const labelUList& own = mesh_.owner();
+    const PtrList<vectorField> uNbr(neighbourVelocities(U));
+    scalarField& diag = m.diag();
+    vectorField& source = m.source();
+    scalarField& upper = m.upper();
+    scalarField& lower = m.lower();
+
+    for (link& L : links_)
+    {
+        const label c = L.fluid;
+        scalar k, k0;
+        if (L.face >= 0)
+        {
+            k = K[L.face];
+            k0 = k*dc[L.face];
+        }
+        else
+        {
+            k = K.boundaryField()[L.patch][L.patchFace];
+            k0 = k*dc.boundaryField()[L.patch][L.patchFace];
+        }
+        const FixedList<scalar, 3> w = slopeWeights(L.d, L.hE, L.a);
+        L.coeffs = {k*w[0], k*w[1], k*w[2], k0};
+
+        // c's row: minus the gain -k (w0 u_w + w1 u_c + w2 u_E) through
+        // the face, less the Laplacian's k0 (u_c - u_g)
+        diag[c] += L.coeffs[1] - k0;
+        source[c] -= L.coeffs[0]*L.uWall;
+        if (L.face >= 0)
+        {
+            (own[L.face] == c ? upper[L.face] : lower[L.face]) += k0;
+        }
+        else
+        {
+            source[c] -= k0*uNbr[L.patch][L.patchFace];
+        }
+        const label fo = L.opposite;
+        if (fo >= mesh_.nInternalFaces())
+        {
+            source[c] -=
+                L.coeffs[2]*oppositeVelocity(L, U.primitiveField(), uNbr);
+        }
+        else if (fo >= 0)
+        {
+            (own[fo] == c ? upper[fo] : lower[fo]) += L.coeffs[2];
+        }
+    }
+    return tm;
+}
+
+
+void Foam::wallLinks::momentum
+(
+    const volVectorField& U,
+    const scalar dt,
+    List<vector>& momentum,
+    List<vector>& moment
+) const
+{
+    const vectorField& u = U.primitiveField();
+    const PtrList<vectorField> uNbr(neighbourVelocities(U));
+    for (const link& L : links_)
+    {
+        const label c = L.fluid;
+        const vector uE = oppositeVelocity(L, u, uNbr);
+        const vector uG =
+            L.face >= 0 ? u[L.solid] : uNbr[L.patch][L.patchFace];
+        // c gained the link's flux instead of exchanging the Laplacian's
+        // with g; g kept the Laplacian's gain k0 (u_c - u_g) (on the
+        // other rank across a processor patch, which has no link for it)
+        const vector gain =
+            L.coeffs[3]*(u[c] - uG)
+          - (
+                L.coeffs[0]*L.uWall + L.coeffs[1]*u[c]
+              + L.coeffs[2]*uE
+            );
+        momentum[L.body] += dt*gain;
+        moment[L.body] += L.arm ^ (dt*gain);
+    }
+}
+
+// ************************************************************************* //
