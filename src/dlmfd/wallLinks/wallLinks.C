@@ -14,6 +14,7 @@ License
 #include "wallLinks.H"
 #include "posedShape.H"
 #include "linear.H"
+#include "calculatedFvPatchFields.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
@@ -71,6 +72,60 @@ Foam::scalar Foam::wallLinks::crossing
 }
 
 
+bool Foam::wallLinks::passesThrough
+(
+    const body& B,
+    const periodicImages& images,
+    const point& a,
+    const point& b,
+    scalar& tIn,
+    scalar& tOut,
+    vector& uIn,
+    vector& uOut,
+    vector& armIn,
+    vector& armOut
+)
+{
+    const point mid = 0.5*(a + b);
+    const point X = mid - images.nearest(mid - B.centre);
+    const posedShape S(*B.shape, X, B.R, "wall links");
+    constexpr int nSamples = 16;
+    int first = -1, last = -1;
+    for (int k = 1; k < nSamples; ++k)
+    {
+        if (S.contains(a + (scalar(k)/nSamples)*(b - a)))
+        {
+            if (first < 0)
+            {
+                first = k;
+            }
+            last = k;
+        }
+    }
+    if (first < 0)
+    {
+        return false;
+    }
+    // The inside of a convex body along a line is one interval
+    const auto bisect = [&](scalar out, scalar in)
+    {
+        for (int i = 0; i < nBisections; ++i)
+        {
+            const scalar m = 0.5*(out + in);
+            (S.contains(a + m*(b - a)) ? in : out) = m;
+        }
+        return 0.5*(out + in);
+    };
+    tIn = bisect(scalar(first - 1)/nSamples, scalar(first)/nSamples);
+    tOut = bisect(scalar(last + 1)/nSamples, scalar(last)/nSamples);
+    armIn = a + tIn*(b - a) - X;
+    armOut = a + tOut*(b - a) - X;
+    uIn = B.V + (B.omega ^ armIn);
+    uOut = B.V + (B.omega ^ armOut);
+    return true;
+}
+
+
 Foam::label Foam::wallLinks::oppositeFace
 (
     const label c,
@@ -78,7 +133,8 @@ Foam::label Foam::wallLinks::oppositeFace
     const scalarField& owner,
     const PtrList<scalarField>& ownerNbr,
     const PtrList<vectorField>& deltaNbr,
-    scalar& distance
+    point& beyond,
+    label& beyondBody
 ) const
 {
     const vectorField& Sf = mesh_.faceAreas();
@@ -105,8 +161,9 @@ Foam::label Foam::wallLinks::oppositeFace
     if (best < mesh_.nInternalFaces())
     {
         const label E = own[best] == c ? nei[best] : own[best];
-        distance = mag(C[E] - C[c]);
-        return owner[E] < 0 ? best : -1;
+        beyond = C[E];
+        beyondBody = label(owner[E]);
+        return best;
     }
     const label patchi = mesh_.boundaryMesh().whichPatch(best);
     if (!ownerNbr.set(patchi))
@@ -114,8 +171,9 @@ Foam::label Foam::wallLinks::oppositeFace
         return -1;
     }
     const label i = best - mesh_.boundaryMesh()[patchi].start();
-    distance = mag(deltaNbr[patchi][i]);
-    return ownerNbr[patchi][i] < 0 ? best : -1;
+    beyond = C[c] + deltaNbr[patchi][i];
+    beyondBody = label(ownerNbr[patchi][i]);
+    return best;
 }
 
 
@@ -239,8 +297,28 @@ void Foam::wallLinks::update
         L.body = bi;
         L.d = t*mag(b - a);
         L.a = (xf - a) & e;
-        L.opposite =
-            oppositeFace(L.fluid, S, body, ownerNbr, deltaNbr, L.hE);
+        // The third point: the fluid cell beyond c's opposite face, or
+        // where the line meets that cell's body (a gap of one cell)
+        point beyond;
+        label beyondBody = -1;
+        L.opposite = oppositeFace
+        (
+            L.fluid, S, body, ownerNbr, deltaNbr, beyond, beyondBody
+        );
+        if (L.opposite >= 0 && beyondBody < 0)
+        {
+            L.hE = mag(beyond - a);
+        }
+        else if (L.opposite >= 0)
+        {
+            vector arm;
+            L.hE = crossing
+            (
+                bodies[beyondBody], images, a, beyond, L.uFar, arm
+            )*mag(beyond - a);
+            L.farWall = true;
+            L.opposite = -1;
+        }
         links_.append(L);
     };
 
@@ -261,6 +339,168 @@ void Foam::wallLinks::update
             L, C[L.fluid], C[L.solid], label(body[L.solid]),
             oBody ? -Sf[f] : Sf[f], Cf[f]
         );
+    }
+
+    // Links between two fluid cells that pass through a body (an edge or
+    // a corner cut off): the fluid cells within two faces of a body's
+    // cell, each with that body (the first met; across coupled patches
+    // too, so that both sides of a face agree)
+    volScalarField near
+    (
+        IOobject
+        (
+            "wallLinksNear",
+            mesh_.time().timeName(),
+            mesh_,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        mesh_,
+        dimensionedScalar("none", dimless, -1),
+        calculatedFvPatchScalarField::typeName
+    );
+    scalarField& nearBody = near.primitiveFieldRef();
+    for (int hop = 0; hop < 2; ++hop)
+    {
+        // A cell's mark: its body, or the body it reached by the last hop
+        volScalarField mark
+        (
+            IOobject
+            (
+                "wallLinksMark",
+                mesh_.time().timeName(),
+                mesh_,
+                IOobject::NO_READ,
+                IOobject::NO_WRITE,
+                false
+            ),
+            near
+        );
+        forAll(body, celli)
+        {
+            if (body[celli] >= 0)
+            {
+                mark[celli] = body[celli];
+            }
+        }
+        mark.correctBoundaryConditions();
+        const scalarField reached(mark.primitiveField());
+        forAll(nei, f)
+        {
+            const label o = own[f], n = nei[f];
+            if (body[n] < 0 && nearBody[n] < 0 && reached[o] >= 0)
+            {
+                nearBody[n] = reached[o];
+            }
+            if (body[o] < 0 && nearBody[o] < 0 && reached[n] >= 0)
+            {
+                nearBody[o] = reached[n];
+            }
+        }
+        forAll(mesh_.boundary(), patchi)
+        {
+            const fvPatch& p = mesh_.boundary()[patchi];
+            if (!p.coupled())
+            {
+                continue;
+            }
+            const scalarField markNbr
+            (
+                mark.boundaryField()[patchi].patchNeighbourField()
+            );
+            forAll(p.faceCells(), i)
+            {
+                const label l = p.faceCells()[i];
+                if (body[l] < 0 && nearBody[l] < 0 && markNbr[i] >= 0)
+                {
+                    nearBody[l] = markNbr[i];
+                }
+            }
+        }
+    }
+    near.correctBoundaryConditions();
+
+    // Each side of such a face a link to its own wall, the line through
+    // the wall and its centre
+    const auto addThrough = [&](link L, const point& a, const point& b,
+        const label bi, const point& xf)
+    {
+        scalar tIn, tOut;
+        vector uIn, uOut, armIn, armOut;
+        if
+        (
+            !passesThrough
+            (
+                bodies[bi], images, a, b, tIn, tOut, uIn, uOut, armIn,
+                armOut
+            )
+        )
+        {
+            return false;
+        }
+        const scalar Delta = mag(b - a);
+        L.through = true;
+        L.d = max(tIn, minFraction)*Delta;
+        L.a = (xf - a) & (b - a)/Delta;
+        L.uWall = uIn;
+        L.arm = armIn;
+        L.body = bi;
+        links_.append(L);
+        return true;
+    };
+    forAll(nei, f)
+    {
+        const label o = own[f], n = nei[f];
+        if (body[o] >= 0 || body[n] >= 0)
+        {
+            continue;
+        }
+        const label bi = label(max(nearBody[o], nearBody[n]));
+        if (bi < 0)
+        {
+            continue;
+        }
+        link A;
+        A.face = f;
+        A.fluid = o;
+        A.solid = n;
+        if (addThrough(A, C[o], C[n], bi, Cf[f]))
+        {
+            link B(A);
+            B.fluid = n;
+            B.solid = o;
+            addThrough(B, C[n], C[o], bi, Cf[f]);
+        }
+    }
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatch& p = mesh_.boundary()[patchi];
+        if (!p.coupled())
+        {
+            continue;
+        }
+        const scalarField nearNbr
+        (
+            near.boundaryField()[patchi].patchNeighbourField()
+        );
+        const scalarField& bodyNbr = ownerNbr[patchi];
+        const vectorField& delta = deltaNbr[patchi];
+        forAll(p.faceCells(), i)
+        {
+            const label l = p.faceCells()[i];
+            const label bi = label(max(nearBody[l], nearNbr[i]));
+            if (body[l] >= 0 || bodyNbr[i] >= 0 || bi < 0)
+            {
+                continue;
+            }
+            // This side's row only; the other side adds its own
+            link L;
+            L.patch = patchi;
+            L.patchFace = i;
+            L.fluid = l;
+            addThrough(L, C[l], C[l] + delta[i], bi, p.Cf()[i]);
+        }
     }
 
     forAll(mesh_.boundary(), patchi)
@@ -346,7 +586,11 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::wallLinks::matrix
             source[c] -= k0*uNbr[L.patch][L.patchFace];
         }
         const label fo = L.opposite;
-        if (fo >= mesh_.nInternalFaces())
+        if (L.farWall)
+        {
+            source[c] -= L.coeffs[2]*L.uFar;
+        }
+        else if (fo >= mesh_.nInternalFaces())
         {
             source[c] -=
                 L.coeffs[2]*oppositeVelocity(L, U.primitiveField(), uNbr);
@@ -373,14 +617,16 @@ void Foam::wallLinks::momentum
     for (const link& L : links_)
     {
         const label c = L.fluid;
-        const vector uE = oppositeVelocity(L, u, uNbr);
+        const vector uE =
+            L.farWall ? L.uFar : oppositeVelocity(L, u, uNbr);
         const vector uG =
             L.face >= 0 ? u[L.solid] : uNbr[L.patch][L.patchFace];
         // c gained the link's flux instead of exchanging the Laplacian's
         // with g; g kept the Laplacian's gain k0 (u_c - u_g) (on the
-        // other rank across a processor patch, which has no link for it)
+        // other rank across a processor patch, which has no link for it),
+        // unless g is a fluid cell with its own link through the body
         const vector gain =
-            L.coeffs[3]*(u[c] - uG)
+            (L.through ? 0 : L.coeffs[3])*(u[c] - uG)
           - (
                 L.coeffs[0]*L.uWall + L.coeffs[1]*u[c]
               + L.coeffs[2]*uE
