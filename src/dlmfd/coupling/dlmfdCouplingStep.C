@@ -155,11 +155,17 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::dlmfdCoupling::wallLinkMatrix
 {
     clockTime clock;
     const label n = granular_.size();
-    List<wallLinks::body> bodies(n);
+    // The bodies where and as they move now (the ghost cells' are the
+    // predictor's, a step's travel apart at most)
+    List<fictitiousDomain::body> bodies(n);
     for (label i = 0; i < n; ++i)
     {
         const rigidParticle& p = granular_.particle(i);
-        bodies[i] = {&p.shape(), p.position(), p.R(), p.velocity(), p.omega()};
+        bodies[i].shape = &p.shape();
+        bodies[i].centre = p.position();
+        bodies[i].R = p.R();
+        bodies[i].V = p.velocity();
+        bodies[i].omega = p.omega();
     }
     links_.update(fd_.ghostOwner(), bodies, fd_.images());
     tmp<fvVectorMatrix> m = links_.matrix(U, nu);

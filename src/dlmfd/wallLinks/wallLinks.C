@@ -46,26 +46,10 @@ Foam::scalar Foam::wallLinks::crossing
     // The body's image nearest the link's inside end
     const point X = b - images.nearest(b - B.centre);
     const posedShape S(*B.shape, X, B.R, "wall links");
-    scalar lo = 0, hi = 1;
-    if (S.contains(a))
-    {
-        // Both ends inside (the fluid cell is another body's): the fluid
-        // end is on the wall
-        hi = 0;
-    }
-    for (int i = 0; i < nBisections && hi > lo; ++i)
-    {
-        const scalar mid = 0.5*(lo + hi);
-        if (S.contains(a + mid*(b - a)))
-        {
-            hi = mid;
-        }
-        else
-        {
-            lo = mid;
-        }
-    }
-    const scalar t = 0.5*(lo + hi);
+    // Both ends inside (the fluid cell is another body's): the fluid end
+    // is on the wall
+    const scalar t =
+        S.contains(a) ? scalar(0) : S.segmentCrossing(a, b, 0, 1, nBisections);
     arm = a + t*(b - a) - X;
     uWall = B.V + (B.omega ^ arm);
     return max(t, minFraction);
@@ -107,17 +91,14 @@ bool Foam::wallLinks::passesThrough
         return false;
     }
     // The inside of a convex body along a line is one interval
-    const auto bisect = [&](scalar out, scalar in)
-    {
-        for (int i = 0; i < nBisections; ++i)
-        {
-            const scalar m = 0.5*(out + in);
-            (S.contains(a + m*(b - a)) ? in : out) = m;
-        }
-        return 0.5*(out + in);
-    };
-    tIn = bisect(scalar(first - 1)/nSamples, scalar(first)/nSamples);
-    tOut = bisect(scalar(last + 1)/nSamples, scalar(last)/nSamples);
+    tIn = S.segmentCrossing
+    (
+        a, b, scalar(first - 1)/nSamples, scalar(first)/nSamples, nBisections
+    );
+    tOut = S.segmentCrossing
+    (
+        a, b, scalar(last + 1)/nSamples, scalar(last)/nSamples, nBisections
+    );
     armIn = a + tIn*(b - a) - X;
     armOut = a + tOut*(b - a) - X;
     uIn = B.V + (B.omega ^ armIn);
