@@ -19,6 +19,14 @@ def sub(path, pattern, repl):
     open(path, "w").write(new)
 
 
+def add_fd_entries(path, entries):
+    """Add entries at the end of the fictitiousDomain dictionary of the
+    dlmfdProperties at path: after the tutorial's own, so that they win
+    over an entry of the same name (OpenFOAM keeps the last)"""
+    if entries.strip():
+        sub(path, r"^(fictitiousDomain\s*\n\{.*?)^\}", lambda m: m.group(1) + "    " + entries + "\n}")
+
+
 def foam_set(case, path, entry, value):
     """Set one entry (sub-dictionaries separated by /) of the dictionary at
     case/path with foamDictionary, which reads its #includes and writes the

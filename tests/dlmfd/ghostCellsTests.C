@@ -216,7 +216,7 @@ TEST(ghostCells, linearShearAlongAFaceIsExtrapolatedThroughTheWall)
 
 TEST(ghostCells, viscousShearMovesNoMassButGivesTheFluidTheWallShear)
 {
-    // The shear of the test above with ghostShear viscous (the default):
+    // The shear of the test above with ghostShear viscous:
     // the ghost cells under the face move rigidly (no velocity along the
     // shell, so no mass flux through the body), and the face between each
     // of them and its fluid neighbour carries the viscous flux of the
@@ -225,7 +225,9 @@ TEST(ghostCells, viscousShearMovesNoMassButGivesTheFluidTheWallShear)
     // and the sources sum to zero over the mesh
     faceShear s;
     const scalar nu = 0.1, h = 1.0/24;
-    fictitiousDomain fd(s.mesh, ghostCells());
+    dictionary dict(ghostCells());
+    dict.add("ghostShear", word("viscous"));
+    fictitiousDomain fd(s.mesh, dict);
     ASSERT_TRUE(fd.hasWallShearSource());
     const fictitiousDomain::result r = fd.solve(s.U, s.bodies, 0.01)[0];
     const volScalarField nuField

@@ -169,6 +169,9 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::dlmfdCoupling::wallLinkMatrix
     }
     links_.update(fd_.ghostOwner(), bodies, fd_.images());
     tmp<fvVectorMatrix> m = links_.matrix(U, nu);
+    linkDdtCoeff_ =
+        mesh_.time().deltaTValue()
+       *gAverage(fvm::ddt(U)().A()().primitiveField());
     fdSeconds_ += clock.timeIncrement();
     return m;
 }
@@ -207,6 +210,32 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::dlmfdCoupling::penalty
 }
 
 
+void Foam::dlmfdCoupling::payWallLinks
+(
+    const volVectorField& U,
+    List<vector>& momentum,
+    List<vector>& moment
+)
+{
+    const label n = granular_.size();
+    const scalar c = linkDdtCoeff_;
+    momentum.setSize(n);
+    moment.setSize(n);
+    momentum = Zero;
+    moment = Zero;
+    links_.momentum(U, mesh_.time().deltaTValue()/c, momentum, moment);
+    if (linkMomentum_.size() == n)
+    {
+        for (label i = 0; i < n; ++i)
+        {
+            momentum[i] += (c - 1)/c*linkMomentum_[i];
+            moment[i] += (c - 1)/c*linkMoment_[i];
+        }
+    }
+    fd_.addReleased(momentum, moment);
+}
+
+
 void Foam::dlmfdCoupling::correct(volVectorField& U)
 {
     clockTime clock;
@@ -231,6 +260,13 @@ void Foam::dlmfdCoupling::correct(volVectorField& U)
     }
     ++nCorrections_;
     const scalar dt = mesh_.time().deltaTValue();
+    if (fd_.hasWallLinks())
+    {
+        // Each corrector solves the step again from its start: the links'
+        // momentum of this corrector's fluid step, as evolve() pays it
+        List<vector> linkMomentum, linkMoment;
+        payWallLinks(U, linkMomentum, linkMoment);
+    }
     const scalar commBefore = fd_.communicationSeconds();
     const List<fictitiousDomain::result>& res = fd_.solve(U, bodies, dt, true);
     const scalar fdComm = fd_.communicationSeconds() - commBefore;
@@ -305,9 +341,10 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
     if (fd_.hasWallLinks())
     {
         // What the fluid gained at the links in its step, the bodies pay
-        List<vector> linkMomentum(n, Zero), linkMoment(n, Zero);
-        links_.momentum(U, dt, linkMomentum, linkMoment);
-        fd_.addReleased(linkMomentum, linkMoment);
+        List<vector> linkMomentum, linkMoment;
+        payWallLinks(U, linkMomentum, linkMoment);
+        linkMomentum_.transfer(linkMomentum);
+        linkMoment_.transfer(linkMoment);
     }
     const scalar commBefore = fd_.communicationSeconds();
     const List<fictitiousDomain::result>& res = fd_.solve(U, bodies, dt);

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "fictitiousDomain.H"
+#include "OStringStream.H"
 #include "bodyExchange.H"
 #include "fvmDdt.H"
 #include "linear.H"
@@ -117,7 +118,7 @@ Foam::fictitiousDomain::fictitiousDomain
     (
         surfaceTreatmentNames.getOrDefault
         (
-            "surfaceTreatment", dict, surfaceTreatment::fluidStencil
+            "surfaceTreatment", dict, surfaceTreatment::ghostCells
         )
     ),
     ghostFitOrder_(dict.getOrDefault<label>("ghostFitOrder", 1)),
@@ -141,7 +142,7 @@ Foam::fictitiousDomain::fictitiousDomain
     (
         ghostShearModelNames.getOrDefault
         (
-            "ghostShear", dict, ghostShearModel::viscous
+            "ghostShear", dict, ghostShearModel::link
         )
     ),
     fitDistance_
@@ -243,6 +244,31 @@ Foam::fictitiousDomain::fictitiousDomain
             << "maxIterations = " << maxIterations_ << " is not allowed;"
             << " it must be >= 1" << exit(FatalIOError);
     }
+    // A keyword the selected treatment does not read would be ignored in
+    // silence: refused, with the treatment that reads it
+    const wordList stencilOnly
+    ({
+        "surfacePoints", "surfacePointSpacing", "surfaceStencilRadius",
+        "surfacePointRetraction", "tolerance", "maxIterations"
+    });
+    const wordList ghostOnly
+    ({
+        "ghostFitRadius", "ghostFitOrder", "ghostFitDistance", "ghostCutCells",
+        "ghostShear", "fluidStepForce", "penaltyFactor"
+    });
+    const bool ghost = treatment_ == surfaceTreatment::ghostCells;
+    for (const word& key : (ghost ? stencilOnly : ghostOnly))
+    {
+        if (dict.found(key, keyType::LITERAL))
+        {
+            FatalIOErrorInFunction(dict)
+                << "fictitiousDomain/" << key << " is read by surfaceTreatment "
+                << (ghost ? "fluidStencil" : "ghostCells") << " only; this"
+                << " dictionary selects " << surfaceTreatmentNames[treatment_]
+                << ". Remove the entry or select the treatment that reads it"
+                << exit(FatalIOError);
+        }
+    }
     if (twoD_ && mesh.geometricD()[2] > 0)
     {
         FatalErrorInFunction
@@ -264,6 +290,28 @@ Foam::wordList Foam::fictitiousDomain::keywords()
         "surfacePoints", "surfacePointSpacing", "surfaceStencilRadius",
         "surfacePointRetraction", "tolerance", "maxIterations"
     });
+}
+
+
+Foam::string Foam::fictitiousDomain::describe() const
+{
+    OStringStream os;
+    os  << "surfaceTreatment " << surfaceTreatmentNames[treatment_];
+    if (treatment_ == surfaceTreatment::ghostCells)
+    {
+        os  << ", ghostShear " << ghostShearModelNames[ghostShear_]
+            << ", ghostCutCells " << cutCellForcingNames[cutCells_]
+            << ", ghostFitRadius " << ghostFitRadius_
+            << ", ghostFitOrder " << ghostFitOrder_
+            << ", ghostFitDistance " << ghostFitDistanceNames[fitDistance_];
+    }
+    else
+    {
+        os  << ", surfaceStencilRadius " << stencils_.radius()
+            << ", tolerance " << tolerance_
+            << ", maxIterations " << maxIterations_;
+    }
+    return os.str();
 }
 
 

@@ -564,7 +564,8 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::wallLinks::matrix
         }
         else
         {
-            source[c] -= k0*uNbr[L.patch][L.patchFace];
+            L.uSolidExplicit = uNbr[L.patch][L.patchFace];
+            source[c] -= k0*L.uSolidExplicit;
         }
         const label fo = L.opposite;
         if (L.farWall)
@@ -573,8 +574,9 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::wallLinks::matrix
         }
         else if (fo >= mesh_.nInternalFaces())
         {
-            source[c] -=
-                L.coeffs[2]*oppositeVelocity(L, U.primitiveField(), uNbr);
+            L.uOppositeExplicit =
+                oppositeVelocity(L, U.primitiveField(), uNbr);
+            source[c] -= L.coeffs[2]*L.uOppositeExplicit;
         }
         else if (fo >= 0)
         {
@@ -595,23 +597,40 @@ void Foam::wallLinks::momentum
 {
     const vectorField& u = U.primitiveField();
     const PtrList<vectorField> uNbr(neighbourVelocities(U));
+    const label nInternal = mesh_.nInternalFaces();
     for (const link& L : links_)
     {
         const label c = L.fluid;
+        // c's row: the link's flux, its third point as the matrix took it
+        // (explicitly across a coupled patch)
         const vector uE =
-            L.farWall ? L.uFar : oppositeVelocity(L, u, uNbr);
-        const vector uG =
-            L.face >= 0 ? u[L.solid] : uNbr[L.patch][L.patchFace];
-        // c gained the link's flux instead of exchanging the Laplacian's
-        // with g; g kept the Laplacian's gain k0 (u_c - u_g) (on the
-        // other rank across a processor patch, which has no link for it),
-        // unless g is a fluid cell with its own link through the body
-        const vector gain =
-            (L.through ? 0 : L.coeffs[3])*(u[c] - uG)
+            L.farWall ? L.uFar
+          : L.opposite >= nInternal ? L.uOppositeExplicit
+          : oppositeVelocity(L, u, uNbr);
+        vector gain =
           - (
                 L.coeffs[0]*L.uWall + L.coeffs[1]*u[c]
               + L.coeffs[2]*uE
             );
+        // c no longer exchanges the Laplacian's flux with g, while g's
+        // row keeps k0 (u_c - u_g) (on the other rank across a processor
+        // patch, which has no link for it), unless g is a fluid cell with
+        // its own link through the body
+        if (!L.through)
+        {
+            const scalar k0 = L.coeffs[3];
+            if (L.face >= 0)
+            {
+                gain += k0*(u[c] - u[L.solid]);
+            }
+            else
+            {
+                // Across a coupled patch c's row kept the Laplacian's
+                // coupling to g, less the matrix's explicit k0 u_g
+                const vector uG = uNbr[L.patch][L.patchFace];
+                gain += k0*(u[c] - uG) + k0*(uG - L.uSolidExplicit);
+            }
+        }
         momentum[L.body] += dt*gain;
         moment[L.body] += L.arm ^ (dt*gain);
     }
