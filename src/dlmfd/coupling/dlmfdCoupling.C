@@ -292,10 +292,8 @@ Foam::dlmfdCoupling::dlmfdCoupling
         fd_.treatment(),
         fd_.search()
     ),
-    links_(mesh),
+    links_(mesh, fd_.hasWallLinks()),
     linkDdtCoeff_(1),
-    linkMomentum_(),
-    linkMoment_(),
     Fh_(),
     Th_(),
     series_(),
@@ -438,7 +436,7 @@ Foam::dlmfdCoupling::dlmfdCoupling
     }
     Info<< "    walls " << granular_.walls().size() << ", contact law "
         << "sub-step T_c/N = " << granular_.maxSubStep() << " s" << nl
-        << "    coupling: " << fd_.describe() << nl
+        << "    coupling: " << fd_.describe().c_str() << nl
         << "    fluid step held by "
         << (penalty_.on()
           ? "a penalty, K dt = " + Foam::name(penalty_.factor())

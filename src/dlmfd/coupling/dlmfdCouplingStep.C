@@ -210,32 +210,6 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::dlmfdCoupling::penalty
 }
 
 
-void Foam::dlmfdCoupling::payWallLinks
-(
-    const volVectorField& U,
-    List<vector>& momentum,
-    List<vector>& moment
-)
-{
-    const label n = granular_.size();
-    const scalar c = linkDdtCoeff_;
-    momentum.setSize(n);
-    moment.setSize(n);
-    momentum = Zero;
-    moment = Zero;
-    links_.momentum(U, mesh_.time().deltaTValue()/c, momentum, moment);
-    if (linkMomentum_.size() == n)
-    {
-        for (label i = 0; i < n; ++i)
-        {
-            momentum[i] += (c - 1)/c*linkMomentum_[i];
-            moment[i] += (c - 1)/c*linkMoment_[i];
-        }
-    }
-    fd_.addReleased(momentum, moment);
-}
-
-
 void Foam::dlmfdCoupling::correct(volVectorField& U)
 {
     clockTime clock;
@@ -260,13 +234,6 @@ void Foam::dlmfdCoupling::correct(volVectorField& U)
     }
     ++nCorrections_;
     const scalar dt = mesh_.time().deltaTValue();
-    if (fd_.hasWallLinks())
-    {
-        // Each corrector solves the step again from its start: the links'
-        // momentum of this corrector's fluid step, as evolve() pays it
-        List<vector> linkMomentum, linkMoment;
-        payWallLinks(U, linkMomentum, linkMoment);
-    }
     const scalar commBefore = fd_.communicationSeconds();
     const List<fictitiousDomain::result>& res = fd_.solve(U, bodies, dt, true);
     const scalar fdComm = fd_.communicationSeconds() - commBefore;
@@ -341,10 +308,10 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
     if (fd_.hasWallLinks())
     {
         // What the fluid gained at the links in its step, the bodies pay
-        List<vector> linkMomentum, linkMoment;
-        payWallLinks(U, linkMomentum, linkMoment);
-        linkMomentum_.transfer(linkMomentum);
-        linkMoment_.transfer(linkMoment);
+        // (with what the time scheme's history carries of the last step)
+        List<vector> linkMomentum(n, Zero), linkMoment(n, Zero);
+        links_.pay(U, dt, linkDdtCoeff_, linkMomentum, linkMoment);
+        fd_.addReleased(linkMomentum, linkMoment);
     }
     const scalar commBefore = fd_.communicationSeconds();
     const List<fictitiousDomain::result>& res = fd_.solve(U, bodies, dt);

@@ -229,9 +229,43 @@ Foam::PtrList<Foam::vectorField> Foam::wallLinks::neighbourVelocities
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::wallLinks::wallLinks(const fvMesh& mesh)
+Foam::wallLinks::wallLinks(const fvMesh& mesh, const bool on)
 :
-    mesh_(mesh)
+    mesh_(mesh),
+    links_(),
+    paidMomentum_
+    (
+        IOobject
+        (
+            "wallLinkMomentum", mesh.time().timeName(), mesh,
+            on ? IOobject::READ_IF_PRESENT : IOobject::NO_READ,
+            on ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
+        ),
+        mesh,
+        dimensionedVector(dimVelocity*dimVol, Zero)
+    ),
+    paidMoment_
+    (
+        IOobject
+        (
+            "wallLinkMoment", mesh.time().timeName(), mesh,
+            on ? IOobject::READ_IF_PRESENT : IOobject::NO_READ,
+            on ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
+        ),
+        mesh,
+        dimensionedVector(dimVelocity*dimVol*dimLength, Zero)
+    ),
+    paidBody_
+    (
+        IOobject
+        (
+            "wallLinkBody", mesh.time().timeName(), mesh,
+            on ? IOobject::READ_IF_PRESENT : IOobject::NO_READ,
+            on ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
+        ),
+        mesh,
+        dimensionedScalar("none", dimless, -1)
+    )
 {}
 
 
@@ -587,14 +621,53 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::wallLinks::matrix
 }
 
 
-void Foam::wallLinks::momentum
+void Foam::wallLinks::pay
 (
     const volVectorField& U,
     const scalar dt,
+    const scalar ddtCoeff,
     List<vector>& momentum,
     List<vector>& moment
-) const
+)
 {
+    // (c - 1)/c of what each face gave last step, to the body that gave it
+    const scalar carried = (ddtCoeff - 1)/ddtCoeff;
+    const label nBodies = momentum.size();
+    auto carry = [&](vector& M, vector& A, scalar& b)
+    {
+        const label body = label(b);
+        M *= carried;
+        A *= carried;
+        if (body >= 0 && body < nBodies)
+        {
+            momentum[body] += M;
+            moment[body] += A;
+        }
+        if (M == vector::zero)
+        {
+            b = -1;
+        }
+    };
+    vectorField& M = paidMomentum_.primitiveFieldRef();
+    vectorField& A = paidMoment_.primitiveFieldRef();
+    scalarField& B = paidBody_.primitiveFieldRef();
+    forAll(M, f)
+    {
+        carry(M[f], A[f], B[f]);
+    }
+    auto& Mb = paidMomentum_.boundaryFieldRef();
+    auto& Ab = paidMoment_.boundaryFieldRef();
+    auto& Bb = paidBody_.boundaryFieldRef();
+    forAll(Mb, patchi)
+    {
+        forAll(Mb[patchi], i)
+        {
+            carry(Mb[patchi][i], Ab[patchi][i], Bb[patchi][i]);
+        }
+    }
+
+    // This step's flux: a 1/c share, kept per face for the next step (the
+    // two links of a face an edge cuts between fluid centres add up)
     const vectorField& u = U.primitiveField();
     const PtrList<vectorField> uNbr(neighbourVelocities(U));
     const label nInternal = mesh_.nInternalFaces();
@@ -631,8 +704,22 @@ void Foam::wallLinks::momentum
                 gain += k0*(u[c] - uG) + k0*(uG - L.uSolidExplicit);
             }
         }
-        momentum[L.body] += dt*gain;
-        moment[L.body] += L.arm ^ (dt*gain);
+        const vector p = dt/ddtCoeff*gain;
+        momentum[L.body] += p;
+        moment[L.body] += L.arm ^ p;
+        vector& Mf = L.face >= 0 ? M[L.face] : Mb[L.patch][L.patchFace];
+        vector& Af = L.face >= 0 ? A[L.face] : Ab[L.patch][L.patchFace];
+        scalar& Bf = L.face >= 0 ? B[L.face] : Bb[L.patch][L.patchFace];
+        if (label(Bf) != L.body)
+        {
+            // A face whose last step's share went to another body: that
+            // share is paid above; the face now holds this body's
+            Mf = Zero;
+            Af = Zero;
+        }
+        Mf += p;
+        Af += L.arm ^ p;
+        Bf = L.body;
     }
 }
 
