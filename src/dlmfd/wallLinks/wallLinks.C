@@ -229,40 +229,45 @@ Foam::PtrList<Foam::vectorField> Foam::wallLinks::neighbourVelocities
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
+namespace
+{
+    // A field of what the links paid: read and written with the links only
+    Foam::IOobject paidIO
+    (
+        const Foam::fvMesh& mesh,
+        const Foam::word& name,
+        const bool on
+    )
+    {
+        return Foam::IOobject
+        (
+            name, mesh.time().timeName(), mesh,
+            on ? Foam::IOobject::READ_IF_PRESENT : Foam::IOobject::NO_READ,
+            on ? Foam::IOobject::AUTO_WRITE : Foam::IOobject::NO_WRITE
+        );
+    }
+}
+
+
 Foam::wallLinks::wallLinks(const fvMesh& mesh, const bool on)
 :
     mesh_(mesh),
     links_(),
     paidMomentum_
     (
-        IOobject
-        (
-            "wallLinkMomentum", mesh.time().timeName(), mesh,
-            on ? IOobject::READ_IF_PRESENT : IOobject::NO_READ,
-            on ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
-        ),
+        paidIO(mesh, "wallLinkMomentum", on),
         mesh,
         dimensionedVector(dimVelocity*dimVol, Zero)
     ),
     paidMoment_
     (
-        IOobject
-        (
-            "wallLinkMoment", mesh.time().timeName(), mesh,
-            on ? IOobject::READ_IF_PRESENT : IOobject::NO_READ,
-            on ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
-        ),
+        paidIO(mesh, "wallLinkMoment", on),
         mesh,
         dimensionedVector(dimVelocity*dimVol*dimLength, Zero)
     ),
     paidBody_
     (
-        IOobject
-        (
-            "wallLinkBody", mesh.time().timeName(), mesh,
-            on ? IOobject::READ_IF_PRESENT : IOobject::NO_READ,
-            on ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
-        ),
+        paidIO(mesh, "wallLinkBody", on),
         mesh,
         dimensionedScalar("none", dimless, -1)
     )
