@@ -635,44 +635,44 @@ void Foam::wallLinks::pay
     List<vector>& moment
 )
 {
-    // (c - 1)/c of what each face gave last step, to the body that gave it
+    // (c - 1)/c of what each cell gained last step, to the body that paid
     const scalar carried = (ddtCoeff - 1)/ddtCoeff;
     const label nBodies = momentum.size();
-    auto carry = [&](vector& M, vector& A, scalar& b)
-    {
-        const label body = label(b);
-        M *= carried;
-        A *= carried;
-        if (body >= 0 && body < nBodies)
-        {
-            momentum[body] += M;
-            moment[body] += A;
-        }
-        if (M == vector::zero)
-        {
-            b = -1;
-        }
-    };
     vectorField& M = paidMomentum_.primitiveFieldRef();
     vectorField& A = paidMoment_.primitiveFieldRef();
     scalarField& B = paidBody_.primitiveFieldRef();
-    forAll(M, f)
+    forAll(M, celli)
     {
-        carry(M[f], A[f], B[f]);
-    }
-    auto& Mb = paidMomentum_.boundaryFieldRef();
-    auto& Ab = paidMoment_.boundaryFieldRef();
-    auto& Bb = paidBody_.boundaryFieldRef();
-    forAll(Mb, patchi)
-    {
-        forAll(Mb[patchi], i)
+        const label body = label(B[celli]);
+        if (body < 0)
         {
-            carry(Mb[patchi][i], Ab[patchi][i], Bb[patchi][i]);
+            continue;
+        }
+        M[celli] *= carried;
+        A[celli] *= carried;
+        if (body < nBodies)
+        {
+            momentum[body] += M[celli];
+            moment[body] += A[celli];
+        }
+        if (M[celli] == vector::zero)
+        {
+            B[celli] = -1;
+        }
+    }
+    // A cell whose links now go to another body: its carried share was that
+    // body's (paid above), this step's share starts afresh
+    for (const link& L : links_)
+    {
+        if (label(B[L.fluid]) != L.body)
+        {
+            M[L.fluid] = Zero;
+            A[L.fluid] = Zero;
+            B[L.fluid] = L.body;
         }
     }
 
-    // This step's flux: a 1/c share, kept per face for the next step (the
-    // two links of a face an edge cuts between fluid centres add up)
+    // This step's flux: a 1/c share, kept per cell for the next step
     const vectorField& u = U.primitiveField();
     const PtrList<vectorField> uNbr(neighbourVelocities(U));
     const label nInternal = mesh_.nInternalFaces();
@@ -712,19 +712,9 @@ void Foam::wallLinks::pay
         const vector p = dt/ddtCoeff*gain;
         momentum[L.body] += p;
         moment[L.body] += L.arm ^ p;
-        vector& Mf = L.face >= 0 ? M[L.face] : Mb[L.patch][L.patchFace];
-        vector& Af = L.face >= 0 ? A[L.face] : Ab[L.patch][L.patchFace];
-        scalar& Bf = L.face >= 0 ? B[L.face] : Bb[L.patch][L.patchFace];
-        if (label(Bf) != L.body)
-        {
-            // A face whose last step's share went to another body: that
-            // share is paid above; the face now holds this body's
-            Mf = Zero;
-            Af = Zero;
-        }
-        Mf += p;
-        Af += L.arm ^ p;
-        Bf = L.body;
+        M[c] += p;
+        A[c] += L.arm ^ p;
+        B[c] = L.body;
     }
 }
 
