@@ -147,6 +147,15 @@ void Foam::dlmfdCoupling::checkPressureCorrectors
 }
 
 
+Foam::scalar Foam::dlmfdCoupling::ddtCoeff(const volVectorField& U) const
+{
+    // dt times the time scheme's diagonal per volume, averaged
+    return
+        mesh_.time().deltaTValue()
+       *gAverage(fvm::ddt(U)().A()().primitiveField());
+}
+
+
 Foam::tmp<Foam::fvVectorMatrix> Foam::dlmfdCoupling::wallLinkMatrix
 (
     const volVectorField& U,
@@ -169,9 +178,7 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::dlmfdCoupling::wallLinkMatrix
     }
     links_.update(fd_.ghostOwner(), bodies, fd_.images());
     tmp<fvVectorMatrix> m = links_.matrix(U, nu);
-    linkDdtCoeff_ =
-        mesh_.time().deltaTValue()
-       *gAverage(fvm::ddt(U)().A()().primitiveField());
+    linkDdtCoeff_ = ddtCoeff(U);
     fdSeconds_ += clock.timeIncrement();
     return m;
 }
@@ -203,7 +210,7 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::dlmfdCoupling::penalty
     tmp<fvVectorMatrix> m = penalty_.matrix
     (
         U, bodies, fd_.deviation(), fd_.period(), dt,
-        dt*gAverage(fvm::ddt(U)().A()().primitiveField())
+        ddtCoeff(U)
     );
     fdSeconds_ += clock.timeIncrement();
     return m;
