@@ -38,9 +38,7 @@ const Foam::Enum<Foam::fictitiousDomain::cutCellForcing>
 Foam::fictitiousDomain::cutCellForcingNames
 ({
     {cutCellForcing::none, "none"},
-    {cutCellForcing::full, "full"},
     {cutCellForcing::solidFraction, "solidFraction"},
-    {cutCellForcing::solidFractionBothSides, "solidFractionBothSides"},
     {cutCellForcing::ramp, "ramp"},
 });
 
@@ -48,18 +46,8 @@ Foam::fictitiousDomain::cutCellForcingNames
 const Foam::Enum<Foam::fictitiousDomain::ghostShearModel>
 Foam::fictitiousDomain::ghostShearModelNames
 ({
-    {ghostShearModel::mirrored, "mirrored"},
-    {ghostShearModel::rigid, "rigid"},
     {ghostShearModel::viscous, "viscous"},
     {ghostShearModel::link, "link"},
-});
-
-
-const Foam::Enum<Foam::fictitiousDomain::ghostFitDistance>
-Foam::fictitiousDomain::ghostFitDistanceNames
-({
-    {ghostFitDistance::normal, "normal"},
-    {ghostFitDistance::surface, "surface"},
 });
 
 
@@ -121,16 +109,7 @@ Foam::fictitiousDomain::fictitiousDomain
             "surfaceTreatment", dict, surfaceTreatment::ghostCells
         )
     ),
-    ghostFitOrder_(dict.getOrDefault<label>("ghostFitOrder", 1)),
-    // (a parabola, ghostFitOrder 2, needs two layers of cells along the
-    // normal: 2.5 cells for it by default)
-    ghostFitRadius_
-    (
-        dict.getOrDefault<scalar>
-        (
-            "ghostFitRadius", ghostFitOrder_ == 2 ? 2.5 : 1.5
-        )
-    ),
+    ghostFitRadius_(dict.getOrDefault<scalar>("ghostFitRadius", 1.5)),
     cutCells_
     (
         cutCellForcingNames.getOrDefault
@@ -143,13 +122,6 @@ Foam::fictitiousDomain::fictitiousDomain
         ghostShearModelNames.getOrDefault
         (
             "ghostShear", dict, ghostShearModel::link
-        )
-    ),
-    fitDistance_
-    (
-        ghostFitDistanceNames.getOrDefault
-        (
-            "ghostFitDistance", dict, ghostFitDistance::normal
         )
     ),
     stencils_
@@ -224,13 +196,6 @@ Foam::fictitiousDomain::fictitiousDomain
             << " allowed; it must be >= 1.5 (in cell sizes)"
             << exit(FatalIOError);
     }
-    if (ghostFitOrder_ != 1 && ghostFitOrder_ != 2)
-    {
-        FatalIOErrorInFunction(dict)
-            << "ghostFitOrder = " << ghostFitOrder_ << " is not"
-            << " allowed; it must be 1 (s a_t) or 2 (s a_t + s^2 c_t)"
-            << exit(FatalIOError);
-    }
     if (!(tolerance_ > 0 && tolerance_ < 1))
     {
         FatalIOErrorInFunction(dict)
@@ -253,8 +218,8 @@ Foam::fictitiousDomain::fictitiousDomain
     });
     const wordList ghostOnly
     ({
-        "ghostFitRadius", "ghostFitOrder", "ghostFitDistance", "ghostCutCells",
-        "ghostShear", "fluidStepForce", "penaltyFactor"
+        "ghostFitRadius", "ghostCutCells", "ghostShear", "fluidStepForce",
+        "penaltyFactor"
     });
     const bool ghost = treatment_ == surfaceTreatment::ghostCells;
     for (const word& key : (ghost ? stencilOnly : ghostOnly))
@@ -285,8 +250,7 @@ Foam::wordList Foam::fictitiousDomain::keywords()
 {
     return wordList
     ({
-        "surfaceTreatment", "ghostFitRadius", "ghostFitOrder", "ghostFitDistance",
-        "ghostCutCells", "ghostShear",
+        "surfaceTreatment", "ghostFitRadius", "ghostCutCells", "ghostShear",
         "surfacePoints", "surfacePointSpacing", "surfaceStencilRadius",
         "surfacePointRetraction", "tolerance", "maxIterations"
     });
@@ -301,9 +265,7 @@ Foam::string Foam::fictitiousDomain::describe() const
     {
         os  << ", ghostShear " << ghostShearModelNames[ghostShear_]
             << ", ghostCutCells " << cutCellForcingNames[cutCells_]
-            << ", ghostFitRadius " << ghostFitRadius_
-            << ", ghostFitOrder " << ghostFitOrder_
-            << ", ghostFitDistance " << ghostFitDistanceNames[fitDistance_];
+            << ", ghostFitRadius " << ghostFitRadius_;
     }
     else
     {
@@ -459,7 +421,6 @@ bool Foam::fictitiousDomain::needsFluidRelaxation() const
         treatment_ == surfaceTreatment::ghostCells
      && (
             cutCells_ == cutCellForcing::solidFraction
-         || cutCells_ == cutCellForcing::solidFractionBothSides
          || cutCells_ == cutCellForcing::ramp
         );
 }

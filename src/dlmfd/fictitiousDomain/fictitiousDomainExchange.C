@@ -132,12 +132,12 @@ void Foam::fictitiousDomain::collect
     }
     if (needsFluidRelaxation())
     {
-        // The forced cells' fluid relaxation (the data cells need none)
-        const label nForced = con.nInterior + con.nCut;
-        con.relaxation.setSize(nForced);
-        for (label i = 0; i < nForced; ++i)
+        // The cut cells' fluid relaxation (the body's own cells are held
+        // fully, the data cells not at all)
+        con.relaxation.setSize(con.nCut);
+        for (label j = 0; j < con.nCut; ++j)
         {
-            con.relaxation[i] = fluidRelaxation_[cellList[i]];
+            con.relaxation[j] = fluidRelaxation_[cellList[con.nInterior + j]];
         }
     }
     con.centres.transfer(centres);

@@ -86,7 +86,7 @@ void Foam::fictitiousDomain::findGhostCandidates
                     fluidShift.append(si);
                     // A cell the surface cuts (its centre less than half a
                     // cell out) goes to the closest surface, which forces
-                    // it (ghostCutCells full or solidFraction)
+                    // it (ghostCutCells solidFraction or ramp)
                     if
                     (
                         cutCells_ != cutCellForcing::none

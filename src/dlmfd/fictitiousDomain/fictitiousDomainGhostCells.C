@@ -15,14 +15,14 @@ Description
 
     The multipliers act on the body's own cells only (the cells whose
     centres lie inside it), as in Glowinski's method where lambda lives on
-    the particle; a fluid cell is forced only for the part of it the
-    body's surface cuts off (below), so the gaps between close bodies are
-    not blocked by a constraint force. A cell deeper
-    than one and a half cells below the surface moves rigidly. A cell
-    within a cell of it (a ghost cell, depth d below its nearest surface
-    point p, outward normal n there) takes the rigid motion u_r plus a
-    deviation that makes its fluid neighbours feel the wall at p; from one
-    to one and a half cells deep the deviation fades to zero.
+    the particle; a fluid cell is forced only where a cut-cell forcing is
+    selected (below), so the gaps between close bodies are not blocked by a
+    constraint force. A cell deeper than one and a half cells below the
+    surface moves rigidly. A cell within a cell of it (a ghost cell, depth d
+    below its nearest surface point p, outward normal n there) takes the
+    rigid motion u_r plus a normal deviation that makes the flux through
+    the faces it shares with its fluid neighbours that of the wall; from
+    one to one and a half cells deep the deviation fades to zero.
 
     With w = u - u_r the fluid's velocity relative to the body, fitted
     about p over the fluid cells within R = ghostFitRadius cells (s = n.(x
@@ -31,49 +31,36 @@ Description
     as s a_t and, by continuity, its normal part as b s^2. Along n the
     deviation is what makes the flux through the faces shared with the
     fluid neighbours that of the wall (zero where the face lies inside the
-    body). Tangentially the profile carried through the wall, -d a_t, gives
-    the right shear at the wall; with ghostShear viscous (the default) it
-    is not the cell's velocity but enters the viscous flux of each face
-    between the ghost cell and a fluid cell (wallShearSource, in the next
-    fluid step: the fluid cell gains what the ghost cell, and through its
-    balance the body, loses). With ghostShear mirrored the cells carry it:
-    along the body's shell their velocities then run against the outer
-    flow, and the projection makes that a mass flux through the body (a
-    fixed sphere at Re 100 passed a fifth of the flow it met through its
-    inside, out at the front stagnation point, and lost 16 % of its drag:
-    benchmarks/fixedBodyDrag, case.ghostCellsBodyPassesNoFlow). Every
-    weight and the fade vanish where a cell enters or leaves them, so that
-    the ghost velocities change continuously as the body moves through the
-    grid. A ghost cell with no fluid cell in reach (two bodies in contact)
-    moves rigidly.
+    body). Tangentially a ghost cell moves rigidly; the wall's shear
+    reaches its fluid neighbours through the viscous flux of each face
+    between them:
+    - ghostShear link (the default, Foam::wallLinks): the wall's shear
+      along the link between the two cell centres, from where the link
+      crosses the surface;
+    - ghostShear viscous: the fitted profile carried through the wall,
+      -d a_t, in that face's viscous flux (wallShearSource, in the next
+      fluid step: the fluid cell gains what the ghost cell, and through
+      its balance the body, loses).
+    Every weight and the fade vanish where a cell enters or leaves them, so
+    that the ghost velocities change continuously as the body moves
+    through the grid. A ghost cell with no fluid cell in reach (two bodies
+    in contact) moves rigidly.
 
-    The cells the surface cuts (centres within half a cell of it): with
-    ghostCutCells solidFractionBothSides each is forced by
-    the part of it inside the body, phi = 1/2 + d/h_n (d the centre's
-    depth, negative outside; h_n the cell's width along n): a fluid cell
-    s = -d out is held at phi of the fitted profile u_r + s a_t + b s^2 n,
-    a body cell keeps the rest of its velocity (counted in its deviation,
-    so the body's balance below does not change). Held means: in a steady
-    state u = phi u_t + (1 - phi) u_f, u_t the target, u_f the velocity
-    the fluid's own equation gives the cell (A_f u_f its neighbours' and
-    the pressure's pull, A_f its momentum diagonal without the ddt part),
-    as a Brinkman term (phi/(1 - phi)) A_f (u_t - u) would. The fluid step
+    The fluid cells the surface cuts (centres within half a cell of it)
+    are fluid with ghostCutCells none (the default). With solidFraction
+    each is held at the fitted profile u_r + s a_t + b s^2 n for the part
+    of it inside the body, phi = 1/2 - s/h_n (h_n the cell's width along
+    n); with ramp for phi = 1 - 2 s/h. Held means: in a steady state u =
+    phi u_t + (1 - phi) u_f, u_t the target, u_f the velocity the fluid's
+    own equation gives the cell (A_f u_f its neighbours' and the
+    pressure's pull, A_f its momentum diagonal without the ddt part), as a
+    Brinkman term (phi/(1 - phi)) A_f (u_t - u) would. The fluid step
     carries the last force S, which this step replaces, so in a steady
     state S = (sigma/(1 - sigma)) (u_t - u)/dt for a step that moves the
     cell the share sigma of its way to u_t: sigma = phi beta/(phi beta +
-    1 - phi), beta = dt A_f (setFluidRelaxation), gives the Brinkman
-    term whatever dt (fluidStepForce penalty holds the bodies' own cells
-    in the fluid step, but the cut cells' S is carried there too). Before
-    2026-12-03 sigma = phi: a hold growing as 1/dt (a frozen sphere array,
-    +15 % drag from CFL 0.5 to 0.1; benchmarks/frozenArrays). Without it
-    (none, the default) the blockage of the body is that of the cells
-    whose centres lie inside: a cube whose faces stand 0.4 cell beyond a
-    row of centres acted 0.8 cell thinner, with 22 % too little drag at
-    D/dx 6
-    (benchmarks/fixedBodyDrag). It is not the default because free bodies
-    settle slower with it (doc/dictionaries.md): a cell crossing the
-    surface then carries a deviation of about half the fluid's relative
-    velocity, which the body pays as it leaves (suspected, not shown).
+    1 - phi), beta = dt A_f (setFluidRelaxation), gives the Brinkman term
+    whatever dt. Where each forcing stands on the validation table:
+    doc/dictionaries.md, fictitiousDomain.
 
     The fluid's cells get the force density f_c = (u_c - \hat u_c)/dt;
     the body takes the momentum that brings its cells from \hat u_c, less
@@ -91,12 +78,11 @@ Description
     deviations are the fluid's extension through the wall, not momentum of
     the body: in a steady state they cancel, and a cell entering or leaving
     the ghost layer as the body moves through the grid does not kick the
-    body (with them in its balance the ten Cate E2 sphere's speed jumped by
-    2.5 % at each layer of cells it crossed). A cell that leaves the body
-    leaves its deviation, about zero as its centre crosses the surface, in
-    the fluid, and the body pays for it (contribution::released), so that
-    the fluid's momentum less the deviations' sum (field ghostDeviation),
-    plus the bodies', is kept exactly.
+    body. A cell that leaves the body leaves its deviation, about zero as
+    its centre crosses the surface, in the fluid, and the body pays for it
+    (contribution::released), so that the fluid's momentum less the
+    deviations' sum (field ghostDeviation), plus the bodies', is kept
+    exactly.
 
 \*---------------------------------------------------------------------------*/
 
@@ -105,7 +91,6 @@ Description
 #include "posedShape.H"
 #include "rigidMomentumBalance.H"
 #include "fictitiousDomainParts.H"
-#include "neighbourSurfaces.H"
 
 #include <algorithm>
 
@@ -145,7 +130,7 @@ void Foam::fictitiousDomain::solveGhostBody
     // fluid cells around (data), rank after rank; f and dev follow the
     // order of the first two groups, part after part
     DynamicList<point> xIn, xCut, xData;
-    DynamicList<scalar> vIn, vCut, betaIn, betaCut;
+    DynamicList<scalar> vIn, vCut, betaCut;
     DynamicList<vector> uIn, devIn, uCut, uData;
     DynamicList<label> order;    // into In (>= 0) or Cut (-1 - index)
     vector released(Zero), releasedMoment(Zero);
@@ -162,10 +147,6 @@ void Foam::fictitiousDomain::solveGhostBody
                 vIn.append(c->volumes[i]);
                 uIn.append(c->u[i]);
                 devIn.append(c->deviation[i]);
-                if (c->relaxation.size())
-                {
-                    betaIn.append(c->relaxation[i]);
-                }
             }
             else if (i < c->nInterior + c->nCut)
             {
@@ -175,7 +156,7 @@ void Foam::fictitiousDomain::solveGhostBody
                 uCut.append(c->u[i]);
                 if (c->relaxation.size())
                 {
-                    betaCut.append(c->relaxation[i]);
+                    betaCut.append(c->relaxation[i - c->nInterior]);
                 }
             }
             else
@@ -190,41 +171,6 @@ void Foam::fictitiousDomain::solveGhostBody
     const posedShape S(*B.shape, X, B.R);
     const scalar fitRadius = ghostFitRadius_*h;
     const scalar R2 = sqr(fitRadius);
-    const bool quadratic = ghostFitOrder_ == 2;
-
-    // ghostFitOrder 2: the other bodies (nearest images) whose surface a
-    // fit may meet, and a spare slot at the end of the data for the datum
-    // a fit takes from that surface
-    neighbourSurfaces walls;
-    const label nData = xData.size();
-    if (quadratic)
-    {
-        const scalar reachB = B.shape->boundingRadius() + fitRadius;
-        forAll(bodies, o)
-        {
-            const body& O = bodies[o];
-            const vector d = images_.nearest(O.centre - X);
-            if (o != bi && mag(d) < reachB + O.shape->boundingRadius())
-            {
-                walls.add(*O.shape, X + d, O.R, O.V, O.omega);
-            }
-        }
-        xData.append(X);
-        uData.append(Zero);
-    }
-
-    // ghostFitDistance surface: each data cell's own distance to the
-    // body's surface (the largest face-plane distance for polyhedra),
-    // computed once per body; the wall datum's slot is set by each fit
-    scalarList sData;
-    if (fitDistance_ == ghostFitDistance::surface)
-    {
-        sData.setSize(xData.size());
-        for (label k = 0; k < nData; ++k)
-        {
-            sData[k] = S.outsideDistanceBound(xData[k]);
-        }
-    }
 
     // The data and cut cells in bins of a third of the fit radius: a fit
     // looks at the cells of the bins that the box of its half-ball (the
@@ -242,109 +188,46 @@ void Foam::fictitiousDomain::solveGhostBody
     // kappa = (1 - r^2/R^2)^2 of their distance r from p): w = s a_t +
     // b s^2 n near a no-slip wall (w and its tangential derivatives vanish
     // on it; by continuity the normal part starts quadratically). Returned
-    // as weights: a = sum alpha_k w_k / s-scale, b = sum beta_k (w_k.n).
-    // With ghostFitOrder 2 the tangential part is s a_t + s^2 c_t, c =
-    // sum gamma_k w_k: a linear fit of a profile that bends (a gap between
-    // two walls, a boundary layer thinner than R) underestimates the wall
-    // slope. Its least squares carry a penalty eps S4 c^2 (eps = 1e-4),
-    // which keeps the weights bounded where the cells lie at about one s
-    // (the fit then tends to the linear one). It takes as a datum the
-    // surface of another body that the ray p + t n meets within R, with
-    // that body's rigid velocity there: in a gap narrower than R the
-    // profile then vanishes at both walls (in a one-dimensional model of
-    // the coupling, benchmarks/frozenArrays/gapModel, a gap of two cells
-    // passes 29 % too much flow without it, 0.0 % with it; 50 % with
-    // ghostFitOrder 1)
+    // as weights: a = sum alpha_k w_k, b = sum beta_k (w_k.n)
     const auto fit = [&]
     (
         const point& p,
         const vector& n,
         DynamicList<label>& cells,
         DynamicList<scalar>& alpha,
-        DynamicList<scalar>& beta,
-        DynamicList<scalar>& gamma
+        DynamicList<scalar>& beta
     )
     {
         cells.clear();
         alpha.clear();
         beta.clear();
-        gamma.clear();
         near.clear();
-        // (with the surface distance a cell beyond an edge may count
-        // though it lies behind the plane through p: the whole ball)
         point lo, hi;
-        if (sData.size())
-        {
-            lo = p - vector::uniform(fitRadius);
-            hi = p + vector::uniform(fitRadius);
-        }
-        else
-        {
-            pointBins::capBox(p, fitRadius, n, cutCellLimit*h, lo, hi);
-        }
+        pointBins::capBox(p, fitRadius, n, cutCellLimit*h, lo, hi);
         dataBins.forInBox(lo, hi, [&](const label k)
         {
             const vector q = xData[k] - p;
-            const scalar sk = sData.size() ? sData[k] : (n & q);
-            if (sk >= cutCellLimit*h && magSqr(q) < R2)
+            if ((n & q) >= cutCellLimit*h && magSqr(q) < R2)
             {
                 near.append(k);
             }
         });
         std::sort(near.begin(), near.end());
-        // The other body's surface counts as a layer of cells at its
-        // distance t (neighbourSurfaces::layerWeight)
-        scalar wallWeight = 0, t;
-        vector uWall;
-        if
-        (
-            quadratic
-         && walls.firstAlong(p, n, fitRadius, 0.25*h, t, uWall)
-        )
-        {
-            xData[nData] = p + t*n;
-            uData[nData] = uWall;
-            if (sData.size())
-            {
-                sData[nData] = t;
-            }
-            near.append(nData);
-            wallWeight = neighbourSurfaces::layerWeight(t, fitRadius, h, twoD_);
-        }
-        scalar S2 = 0, S3 = 0, S4 = 0;
+        scalar S2 = 0, S4 = 0;
         for (const label k : near)
         {
             const vector q = xData[k] - p;
-            const scalar sk = sData.size() ? sData[k] : (n & q);
-            const scalar r2 = magSqr(q);
-            // (nData, the spare slot, exists with ghostFitOrder 2 only)
-            const scalar kappa = k == nData ? wallWeight : sqr(1 - r2/R2);
+            const scalar sk = n & q;
+            const scalar kappa = sqr(1 - magSqr(q)/R2);
             cells.append(k);
             alpha.append(kappa*sk);
             beta.append(kappa*sk*sk);
             S2 += kappa*sk*sk;
-            S3 += kappa*sk*sk*sk;
             S4 += kappa*sqr(sk*sk);
         }
-        if (quadratic && cells.size())
+        for (scalar& x : alpha)
         {
-            // [S2 S3; S3 (1 + eps) S4] (a, c) = sum kappa (s, s^2) w
-            const scalar S4e = 1.0001*S4;
-            const scalar det = S2*S4e - S3*S3;
-            forAll(cells, i)
-            {
-                const scalar ks = alpha[i], ks2 = beta[i];
-                alpha[i] = (S4e*ks - S3*ks2)/det;
-                gamma.append((S2*ks2 - S3*ks)/det);
-            }
-        }
-        else
-        {
-            for (scalar& x : alpha)
-            {
-                x /= S2;
-            }
-            gamma.setSize(cells.size(), Zero);
+            x /= S2;
         }
         for (scalar& x : beta)
         {
@@ -377,7 +260,7 @@ void Foam::fictitiousDomain::solveGhostBody
     boolList forced(nCut, false);
     scalarList share(nCut, scalar(1));
     DynamicList<label> cells;
-    DynamicList<scalar> alpha, beta, gamma;
+    DynamicList<scalar> alpha, beta;
     for (label j = 0; j < nCut; ++j)
     {
         const vector rj = xCut[j] - X;
@@ -385,18 +268,15 @@ void Foam::fictitiousDomain::solveGhostBody
         point p;
         vector n;
         const scalar sj = -S.depth(xCut[j], p, n);
-        if (!fit(p, n, cells, alpha, beta, gamma))
+        if (!fit(p, n, cells, alpha, beta))
         {
             continue;
         }
         forced[j] = true;
-        // The share of the cell inside the body: all of it (full), or
-        // 1/2 - s/h_n, h_n the width of an axis-aligned cell along n
-        if
-        (
-            cutCells_ == cutCellForcing::solidFraction
-         || cutCells_ == cutCellForcing::solidFractionBothSides
-        )
+        // The share of the cell forced: the part inside the body, 1/2 -
+        // s/h_n, h_n the width of an axis-aligned cell along n
+        // (solidFraction), or 1 - s/(h/2) (ramp)
+        if (cutCells_ == cutCellForcing::solidFraction)
         {
             const scalar hn = h*(mag(n.x()) + mag(n.y()) + mag(n.z()));
             share[j] = stepShare
@@ -404,7 +284,7 @@ void Foam::fictitiousDomain::solveGhostBody
                 min(max(0.5 - sj/hn, scalar(0)), scalar(1)), betaCut[j]
             );
         }
-        else if (cutCells_ == cutCellForcing::ramp)
+        else
         {
             share[j] = stepShare
             (
@@ -418,8 +298,7 @@ void Foam::fictitiousDomain::solveGhostBody
         forAll(cells, i)
         {
             const label k = cells[i];
-            // The tangential weight at sj: s alpha_k + s^2 gamma_k
-            const scalar at = alpha[i] + sj*gamma[i];
+            const scalar at = alpha[i];
             sa += at;
             sb += beta[i];
             ua += at*uData[k];
@@ -484,31 +363,23 @@ void Foam::fictitiousDomain::solveGhostBody
     vectorField mirror(viscous ? nIn : 0, Zero);
     label nGhost = 0, nAlone = 0;
     const scalar link2 = sqr(1.1*h);
-    // The share of each body cell inside the body: 1, or 1/2 + d/h_n with
-    // the cut cells' solid fraction on both sides of the surface
-    scalarList shareIn(nIn, scalar(1));
     for (label c = 0; c < nIn; ++c)
     {
         point p;
         vector n;
         const scalar d = S.depth(xIn[c], p, n);
-        if (cutCells_ == cutCellForcing::solidFractionBothSides)
-        {
-            const scalar hn = h*(mag(n.x()) + mag(n.y()) + mag(n.z()));
-            shareIn[c] = stepShare(min(0.5 + d/hn, scalar(1)), betaIn[c]);
-        }
         const scalar fade = fadeOf(d);
         if (fade <= 0)
         {
             continue;
         }
         ++nGhost;
-        if (!fit(p, n, cells, alpha, beta, gamma))
+        if (!fit(p, n, cells, alpha, beta))
         {
             ++nAlone;
             continue;
         }
-        vector a(Zero), cq(Zero);
+        vector a(Zero);
         scalar b = 0;
         forAll(cells, i)
         {
@@ -516,7 +387,6 @@ void Foam::fictitiousDomain::solveGhostBody
             const vector w = uData[k] - rigidAt(xData[k]);
             a += alpha[i]*w;
             b += beta[i]*(w & n);
-            cq += gamma[i]*w;
         }
         // The normal part through the faces to the fluid neighbours, the
         // links weighed by how far out the neighbour is
@@ -553,30 +423,22 @@ void Foam::fictitiousDomain::solveGhostBody
         addLinks(dataBins, xData);
         addLinks(cutBins, xCut);
         const scalar wn = linkSum/max(linkWeight, 0.5*h);
-        // The profile carried through the wall: in the cell's velocity
-        // (mirrored) or in the viscous fluxes to its fluid neighbours
-        // (viscous)
-        vector profile(-d*(a - (a & n)*n));
-        if (quadratic)
-        {
-            // The parabola continued through the wall, exact for a gap's
-            // Poiseuille profile (with the line, ghostFitOrder 1, a gap of
-            // 2, 3, 4 cells passes 50, 22, 12 % too much flow:
-            // benchmarks/frozenArrays/gapModel)
-            profile += sqr(d)*(cq - (cq & n)*n);
-        }
-        if (twoD_)
-        {
-            profile.z() = 0;
-        }
-        const bool carried = ghostShear_ == ghostShearModel::mirrored;
-        dev[c] = fade*((carried ? profile : vector(Zero)) + wn*n);
+        // Tangentially the cell moves rigidly: with ghostShear viscous the
+        // fitted profile carried through the wall, -d a_t, enters the
+        // viscous fluxes to its fluid neighbours (with link the wall's
+        // shear is Foam::wallLinks')
+        dev[c] = fade*(wn*n);
         if (twoD_)
         {
             dev[c].z() = 0;
         }
         if (viscous)
         {
+            vector profile(-d*(a - (a & n)*n));
+            if (twoD_)
+            {
+                profile.z() = 0;
+            }
             mirror[c] = fade*profile;
         }
     }
@@ -595,14 +457,7 @@ void Foam::fictitiousDomain::solveGhostBody
             const label c = order[i];
             const vector r = xIn[c] - X;
             const vector rigid = rigidAt(xIn[c]);
-            // A cell partly outside the body keeps that part of its
-            // velocity; what it keeps counts as its deviation, so that the
-            // body's balance above holds whatever the share
             vector uNew = rigid + dev[c];
-            if (shareIn[c] < 1)
-            {
-                uNew = uIn[c] + shareIn[c]*(uNew - uIn[c]);
-            }
             if (twoD_)
             {
                 uNew.z() = uIn[c].z();
@@ -612,14 +467,6 @@ void Foam::fictitiousDomain::solveGhostBody
             if (viscous)
             {
                 devOut[order.size() + i] = mirror[c];
-            }
-            if (shareIn[c] < 1)
-            {
-                devOut[i] = uNew - rigid;
-                if (twoD_)
-                {
-                    devOut[i].z() = dev[c].z();
-                }
             }
             const vector lambda = vIn[c]*(rigid - (uIn[c] - devIn[c]))/dt;
             res.sumLambda += lambda;
