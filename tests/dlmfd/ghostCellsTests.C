@@ -314,10 +314,7 @@ TEST(ghostCells, withCutCellsOnlyCutFluidCellsAreForcedEvenInATwoCellGap)
         dictionary dict(ghostCells());
         dict.add("ghostCutCells", cut);
         fictitiousDomain fd(g.mesh, dict);
-        if (fd.needsFluidRelaxation())
-        {
-            fd.setFluidRelaxation(scalarField(g.mesh.nCells(), 0.5));
-        }
+        fd.setFluidRelaxation(scalarField(g.mesh.nCells(), 0.5));
         const List<fictitiousDomain::result>& res = fd.solve(U, g.bodies, 0.01);
         label free = 0, freeInGap = 0, cutInGap = 0;
         forAll(U, c)

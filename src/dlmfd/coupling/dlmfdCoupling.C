@@ -293,7 +293,8 @@ Foam::dlmfdCoupling::dlmfdCoupling
         fd_.search()
     ),
     links_(mesh, fd_.hasWallLinks()),
-    linkDdtCoeff_(1),
+    ddtCoeff_(1),
+    ddtCoeffTimeIndex_(-1),
     Fh_(),
     Th_(),
     series_(),

@@ -147,12 +147,19 @@ void Foam::dlmfdCoupling::checkPressureCorrectors
 }
 
 
-Foam::scalar Foam::dlmfdCoupling::ddtCoeff(const volVectorField& U) const
+Foam::scalar Foam::dlmfdCoupling::ddtCoeff(const volVectorField& U)
 {
-    // dt times the time scheme's diagonal per volume, averaged
-    return
-        mesh_.time().deltaTValue()
-       *gAverage(fvm::ddt(U)().A()().primitiveField());
+    // dt times the time scheme's diagonal per volume, averaged (a matrix
+    // assembled for it: once per time step)
+    const label timeIndex = mesh_.time().timeIndex();
+    if (ddtCoeffTimeIndex_ != timeIndex)
+    {
+        ddtCoeff_ =
+            mesh_.time().deltaTValue()
+           *gAverage(fvm::ddt(U)().A()().primitiveField());
+        ddtCoeffTimeIndex_ = timeIndex;
+    }
+    return ddtCoeff_;
 }
 
 
@@ -178,7 +185,6 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::dlmfdCoupling::wallLinkMatrix
     }
     links_.update(fd_.ghostOwner(), bodies, fd_.images());
     tmp<fvVectorMatrix> m = links_.matrix(U, nu);
-    linkDdtCoeff_ = ddtCoeff(U);
     fdSeconds_ += clock.timeIncrement();
     return m;
 }
@@ -317,7 +323,7 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
         // What the fluid gained at the links in its step, the bodies pay
         // (with what the time scheme's history carries of the last step)
         List<vector> linkMomentum(n, Zero), linkMoment(n, Zero);
-        links_.pay(U, dt, linkDdtCoeff_, linkMomentum, linkMoment);
+        links_.pay(U, dt, ddtCoeff(U), linkMomentum, linkMoment);
         fd_.addReleased(linkMomentum, linkMoment);
     }
     const scalar commBefore = fd_.communicationSeconds();

@@ -379,13 +379,18 @@ void Foam::fictitiousDomain::solveGhostBody
             ++nAlone;
             continue;
         }
+        // b for the normal part; the wall slope a_t for ghostShear viscous
+        // only (the links find the wall's shear themselves)
         vector a(Zero);
         scalar b = 0;
         forAll(cells, i)
         {
             const label k = cells[i];
             const vector w = uData[k] - rigidAt(xData[k]);
-            a += alpha[i]*w;
+            if (viscous)
+            {
+                a += alpha[i]*w;
+            }
             b += beta[i]*(w & n);
         }
         // The normal part through the faces to the fluid neighbours, the

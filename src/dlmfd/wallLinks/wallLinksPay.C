@@ -9,6 +9,11 @@ License
     Free Software Foundation, either version 3 of the License, or (at your
     option) any later version. See <http://www.gnu.org/licenses/>.
 
+Description
+    Foam::wallLinks::pay: the momentum the bodies pay for what the fluid
+    gained at their links in a step, with the share of the last step's
+    payment that the time scheme's history carries into this one.
+
 \*---------------------------------------------------------------------------*/
 
 #include "wallLinks.H"
