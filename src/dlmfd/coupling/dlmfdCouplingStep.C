@@ -425,9 +425,13 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
     Info<< "DLM/FD: " << n << " particles, " << nPoints << " points";
     if (fd_.treatment() == fictitiousDomain::surfaceTreatment::ghostCells)
     {
-        Info<< " (" << nSurface << " ghost cells, " << nDropped
-            << " of them with no fluid cell in reach), momentum balance "
-            << maxError << " m/s";
+        // Only ghostShear viscous fits the fluid at its ghost cells
+        Info<< " (" << nSurface << " ghost cells";
+        if (fd_.hasWallShearSource())
+        {
+            Info<< ", " << nDropped << " of them with no fluid cell in reach";
+        }
+        Info<< "), momentum balance " << maxError << " m/s";
     }
     else
     {

@@ -234,6 +234,23 @@ Foam::fictitiousDomain::fictitiousDomain
                 << exit(FatalIOError);
         }
     }
+    // The default ghost cells move rigidly and no cut cell is held: nothing
+    // is fitted, so a fit radius would be ignored
+    if
+    (
+        ghost
+     && ghostShear_ == ghostShearModel::link
+     && cutCells_ == cutCellForcing::none
+     && dict.found("ghostFitRadius", keyType::LITERAL)
+    )
+    {
+        FatalIOErrorInFunction(dict)
+            << "fictitiousDomain/ghostFitRadius is read with ghostShear viscous"
+            << " or a ghostCutCells forcing (solidFraction, ramp) only; this"
+            << " dictionary selects ghostShear link and ghostCutCells none,"
+            << " which fit nothing. Remove the entry or select what reads it"
+            << exit(FatalIOError);
+    }
     if (twoD_ && mesh.geometricD()[2] > 0)
     {
         FatalErrorInFunction

@@ -18,11 +18,19 @@ Description
     the particle; a fluid cell is forced only where a cut-cell forcing is
     selected (below), so the gaps between close bodies are not blocked by a
     constraint force. A cell deeper than one and a half cells below the
-    surface moves rigidly. A cell within a cell of it (a ghost cell, depth d
-    below its nearest surface point p, outward normal n there) takes the
-    rigid motion u_r plus a normal deviation that makes the flux through
-    the faces it shares with its fluid neighbours that of the wall; from
-    one to one and a half cells deep the deviation fades to zero.
+    surface moves rigidly. So does a cell within a cell and a half of it (a
+    ghost cell) with ghostShear link (the default, Foam::wallLinks): the
+    links carry the wall's shear along each grid link the surface cuts,
+    and a normal deviation, which the fluid would meet only through
+    convection and the mass flux (no viscous term to damp it), fed back on
+    the fluid's normal velocity it was fitted from (a face-on cube at Re
+    100, D/dx 12, never settled with it: benchmarks/fixedBodyDrag).
+
+    With ghostShear viscous a ghost cell (depth d below its nearest surface
+    point p, outward normal n there) takes the rigid motion u_r plus a
+    normal deviation that makes the flux through the faces it shares with
+    its fluid neighbours that of the wall; from one to one and a half
+    cells deep the deviation fades to zero.
 
     With w = u - u_r the fluid's velocity relative to the body, fitted
     about p over the fluid cells within R = ghostFitRadius cells (s = n.(x
@@ -33,18 +41,13 @@ Description
     fluid neighbours that of the wall (zero where the face lies inside the
     body). Tangentially a ghost cell moves rigidly; the wall's shear
     reaches its fluid neighbours through the viscous flux of each face
-    between them:
-    - ghostShear link (the default, Foam::wallLinks): the wall's shear
-      along the link between the two cell centres, from where the link
-      crosses the surface;
-    - ghostShear viscous: the fitted profile carried through the wall,
-      -d a_t, in that face's viscous flux (wallShearSource, in the next
-      fluid step: the fluid cell gains what the ghost cell, and through
-      its balance the body, loses).
-    Every weight and the fade vanish where a cell enters or leaves them, so
-    that the ghost velocities change continuously as the body moves
-    through the grid. A ghost cell with no fluid cell in reach (two bodies
-    in contact) moves rigidly.
+    between them, the fitted profile carried through the wall, -d a_t, in
+    that face's viscous flux (wallShearSource, in the next fluid step: the
+    fluid cell gains what the ghost cell, and through its balance the
+    body, loses). Every weight and the fade vanish where a cell enters or
+    leaves them, so that the ghost velocities change continuously as the
+    body moves through the grid. A ghost cell with no fluid cell in reach
+    (two bodies in contact) moves rigidly.
 
     The fluid cells the surface cuts (centres within half a cell of it)
     are fluid with ghostCutCells none (the default). With solidFraction
@@ -343,8 +346,9 @@ void Foam::fictitiousDomain::solveGhostBody
         return Vnew + (omegaNew ^ (x - X));
     };
 
-    // The ghost cells, within one and a half cells below the surface:
-    // the rigid motion plus the profile of the fit carried through the
+    // The ghost cells, within one and a half cells below the surface
+    // (with ghostShear viscous): the rigid motion plus the profile of the
+    // fit carried through the
     // wall at its nearest point p, -d a_t tangentially; along n, what makes
     // the flux through the faces shared with the fluid neighbours (within
     // 1.1 cells) that of the model, b s_face^2 where the face lies in the
@@ -358,7 +362,7 @@ void Foam::fictitiousDomain::solveGhostBody
     };
     dev.setSize(nIn);
     dev = Zero;
-    // ghostShear viscous: the mirrored profile, for the viscous fluxes only
+    // The mirrored profile, for the viscous fluxes only
     const bool viscous = ghostShear_ == ghostShearModel::viscous;
     vectorField mirror(viscous ? nIn : 0, Zero);
     label nGhost = 0, nAlone = 0;
@@ -374,23 +378,29 @@ void Foam::fictitiousDomain::solveGhostBody
             continue;
         }
         ++nGhost;
+        // With ghostShear link the ghost cell moves rigidly: the links
+        // carry the wall's shear, and the fluid meets the cell only through
+        // convection and the mass flux, where a normal deviation fitted
+        // from the fluid's own normal velocity is undamped by any viscous
+        // term and feeds back on it (a face-on cube at Re 100 and D/dx 12
+        // never settles with it: benchmarks/fixedBodyDrag)
+        if (!viscous)
+        {
+            continue;
+        }
         if (!fit(p, n, cells, alpha, beta))
         {
             ++nAlone;
             continue;
         }
-        // b for the normal part; the wall slope a_t for ghostShear viscous
-        // only (the links find the wall's shear themselves)
+        // The wall slope a_t and b for the normal part
         vector a(Zero);
         scalar b = 0;
         forAll(cells, i)
         {
             const label k = cells[i];
             const vector w = uData[k] - rigidAt(xData[k]);
-            if (viscous)
-            {
-                a += alpha[i]*w;
-            }
+            a += alpha[i]*w;
             b += beta[i]*(w & n);
         }
         // The normal part through the faces to the fluid neighbours, the
@@ -428,24 +438,17 @@ void Foam::fictitiousDomain::solveGhostBody
         addLinks(dataBins, xData);
         addLinks(cutBins, xCut);
         const scalar wn = linkSum/max(linkWeight, 0.5*h);
-        // Tangentially the cell moves rigidly: with ghostShear viscous the
-        // fitted profile carried through the wall, -d a_t, enters the
-        // viscous fluxes to its fluid neighbours (with link the wall's
-        // shear is Foam::wallLinks')
+        // Tangentially the cell moves rigidly: the fitted profile carried
+        // through the wall, -d a_t, enters the viscous fluxes to its fluid
+        // neighbours
         dev[c] = fade*(wn*n);
+        vector profile(-d*(a - (a & n)*n));
         if (twoD_)
         {
             dev[c].z() = 0;
+            profile.z() = 0;
         }
-        if (viscous)
-        {
-            vector profile(-d*(a - (a & n)*n));
-            if (twoD_)
-            {
-                profile.z() = 0;
-            }
-            mirror[c] = fade*profile;
-        }
+        mirror[c] = fade*profile;
     }
 
     // The new velocities, the force density on the fluid and what the body
