@@ -348,8 +348,8 @@ void Foam::fictitiousDomain::solveGhostBody
 
     // The ghost cells, within one and a half cells below the surface
     // (with ghostShear viscous): the rigid motion plus the profile of the
-    // fit carried through the
-    // wall at its nearest point p, -d a_t tangentially; along n, what makes
+    // fit carried through the wall at its nearest point p, -d a_t
+    // tangentially; along n, what makes
     // the flux through the faces shared with the fluid neighbours (within
     // 1.1 cells) that of the model, b s_face^2 where the face lies in the
     // fluid, zero where it lies inside the body. From one to one and a
@@ -378,12 +378,8 @@ void Foam::fictitiousDomain::solveGhostBody
             continue;
         }
         ++nGhost;
-        // With ghostShear link the ghost cell moves rigidly: the links
-        // carry the wall's shear, and the fluid meets the cell only through
-        // convection and the mass flux, where a normal deviation fitted
-        // from the fluid's own normal velocity is undamped by any viscous
-        // term and feeds back on it (a face-on cube at Re 100 and D/dx 12
-        // never settles with it: benchmarks/fixedBodyDrag)
+        // With ghostShear link the ghost cell moves rigidly (why: the
+        // Description)
         if (!viscous)
         {
             continue;
