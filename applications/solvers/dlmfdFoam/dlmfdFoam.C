@@ -45,7 +45,18 @@ Usage
         system/fvSolution PIMPLE       | nOuterCorrectors (the particles' constraint after each), nCorrectors, ...
         constant/fvOptions (optional)  | extra sources and constraints
         constant/sceneProperties (optional) | effects, Foam::sceneEffects
+        constant/dynamicMeshDict (optional) | a refining mesh (dynamicRefineFvMesh), see below
     \endtable
+
+    The mesh is a dynamicFvMesh: without constant/dynamicMeshDict (or with
+    dynamicFvMesh staticFvMesh) it never changes and every result is the
+    static mesh's. A refining mesh changes once per time step, before the
+    fluid step: the fluxes are made from the mapped face velocities Uf and
+    made conservative again (CorrectPhi, fvSolution's pcorr solver; PIMPLE
+    correctPhi, on by default), the pressure's reference cell is chosen
+    again, and the particles' cell data made again
+    (Foam::dlmfdCoupling::updateMesh). Refused: 2D meshes, meshes whose
+    points move, fluidStepForce penalty.
 
     With "fluid off" in constant/sceneProperties the case is a dry granular
     scene: no fluid field, transport model or coupling is made, the
@@ -57,6 +68,8 @@ Usage
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
+#include "dynamicFvMesh.H"
+#include "CorrectPhi.H"
 #include "singlePhaseTransportModel.H"
 #include "pimpleControl.H"
 #include "fvOptions.H"
@@ -99,10 +112,11 @@ int main(int argc, char *argv[])
         return 0;
     }
 
-    #include "createMesh.H"
-    #include "createControl.H"
-    #include "createTimeControls.H"
+    #include "createDynamicFvMesh.H"
+    #include "createDyMControls.H"
+    #include "checkChangingMesh.H"
     #include "createFields.H"
+    #include "createUfIfPresent.H"
     #include "createFvOptions.H"
     #include "initContinuityErrs.H"
     #include "CourantNo.H"
@@ -119,7 +133,7 @@ int main(int argc, char *argv[])
 
     while (runTime.run())
     {
-        #include "readTimeControls.H"
+        #include "readDyMControls.H"
         #include "CourantNo.H"
         #include "setDeltaT.H"
 
@@ -139,6 +153,13 @@ int main(int argc, char *argv[])
         // --- Pressure-velocity PIMPLE corrector loop
         while (pimple.loop())
         {
+            // A refining mesh changes once per time step, before the
+            // fluid step (constant/dynamicMeshDict; none: no change)
+            if (pimple.firstIter())
+            {
+                #include "updateMesh.H"
+            }
+
             #include "UEqn.H"
 
             // --- Pressure corrector loop

@@ -18,12 +18,21 @@ License
 
 Foam::cellCentreSearch::cellCentreSearch(const polyMesh& mesh)
 :
-    centres_(mesh.cellCentres()),
+    mesh_(mesh),
     bounds_(),
     bins_()
 {
-    const label n = centres_.size();
-    boundBox bb(centres_, false);
+    rebuild();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::cellCentreSearch::rebuild()
+{
+    const pointField& centres = mesh_.cellCentres();
+    const label n = centres.size();
+    boundBox bb(centres, false);
     if (n == 0)
     {
         bb = boundBox(point::zero, point::one);
@@ -41,11 +50,9 @@ Foam::cellCentreSearch::cellCentreSearch(const polyMesh& mesh)
         nBins[d] = max(label(1), label(span/(2*meanCell)));
         width[d] = span/nBins[d];
     }
-    bins_ = pointBins(centres_, bb.min(), width, nBins);
+    bins_ = pointBins(centres, bb.min(), width, nBins);
 }
 
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::cellCentreSearch::cellsInBall
 (
@@ -59,13 +66,14 @@ void Foam::cellCentreSearch::cellsInBall
         return;
     }
     const scalar r2 = sqr(r);
+    const pointField& centres = mesh_.cellCentres();
     bins_.forInBox
     (
         x - vector::uniform(r),
         x + vector::uniform(r),
         [&](const label c)
         {
-            if (magSqr(centres_[c] - x) <= r2)
+            if (magSqr(centres[c] - x) <= r2)
             {
                 cells.append(c);
             }

@@ -449,6 +449,12 @@ Foam::dlmfdCoupling::dlmfdCoupling
     granular_.effects().report(Info);
     Info<< endl;
 
+    // On a mesh whose cells may change, before anything is written
+    if (mesh.dynamic())
+    {
+        checkChangingMesh();
+    }
+
     if (Pstream::master())
     {
         const fileName dir

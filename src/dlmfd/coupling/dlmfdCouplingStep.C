@@ -223,6 +223,26 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::dlmfdCoupling::penalty
 }
 
 
+void Foam::dlmfdCoupling::checkChangingMesh() const
+{
+    if (penalty_.on())
+    {
+        FatalErrorInFunction
+            << "constant/dlmfdProperties: fictitiousDomain/fluidStepForce"
+            << " penalty keeps its cells from step to step and cannot follow"
+            << " a mesh whose cells change (constant/dynamicMeshDict); use"
+            << " fluidStepForce multipliers (the default) on such a mesh"
+            << exit(FatalError);
+    }
+}
+
+
+void Foam::dlmfdCoupling::updateMesh()
+{
+    fd_.updateMesh();
+}
+
+
 void Foam::dlmfdCoupling::correct(volVectorField& U)
 {
     clockTime clock;

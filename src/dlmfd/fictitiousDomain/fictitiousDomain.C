@@ -399,6 +399,46 @@ Foam::tmp<Foam::volVectorField> Foam::fictitiousDomain::wallShearSource
 }
 
 
+void Foam::fictitiousDomain::updateMesh()
+{
+    search_.rebuild();
+    owners_ = cellOwnership(mesh_.nCells());
+
+    // The step's per-cell state is made again by the next step
+    stepStartIndex_ = -1;
+    stepStartSource_.clear();
+    stepDdtCoeff_.clear();
+    stepStartDeviation_.clear();
+    stepStartOwner_.clear();
+    fluidRelaxation_.clear();
+    fluidRelaxationIndex_ = -1;
+
+    // A refined cell takes its parent's owner; cells merged into one take
+    // one of theirs or a mean, which is no body's index when they held
+    // different ones: the refinement must keep the bodies' cells at one
+    // level
+    // (a mean of equal owners may differ from them by round-off: such an
+    // owner is set back to the index)
+    forAll(ghostOwner_, c)
+    {
+        const scalar o = ghostOwner_[c];
+        const scalar index = std::round(o);
+        if (mag(o - index) > 1e-9 || index < -1)
+        {
+            FatalErrorInFunction
+                << "cell " << c << " at " << mesh_.C()[c]
+                << " holds a ghost cell's owner " << o
+                << " after the mesh changed: cells of different bodies (or"
+                << " of a body and the fluid) were merged. The refinement"
+                << " (constant/dynamicMeshDict) must not merge or refine the"
+                << " cells of a body's surface layer"
+                << exit(FatalError);
+        }
+        ghostOwner_[c] = index;
+    }
+}
+
+
 void Foam::fictitiousDomain::keepStepStart(const volVectorField& U)
 {
     stepStartIndex_ = mesh_.time().timeIndex();

@@ -183,9 +183,7 @@ Foam::granularVTKWriter::granularVTKWriter
     dir_(dir),
     polyhedra_(readSeries(dir/"polyhedra.vtp.series", startTime)),
     spheres_(readSeries(dir/"spheres.vtp.series", startTime))
-{
-    mkDir(dir_);
-}
+{}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -197,6 +195,10 @@ void Foam::granularVTKWriter::write
     const label index
 )
 {
+    // The folder made at the first write, not before: a run refused at
+    // start leaves no VTK folder behind
+    mkDir(dir_);
+
     // Spheres: one point each
     DynamicList<point> centres;
     DynamicList<scalar> diameters;
