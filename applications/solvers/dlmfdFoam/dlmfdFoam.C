@@ -70,6 +70,7 @@ Usage
 #include "fvCFD.H"
 #include "dynamicFvMesh.H"
 #include "CorrectPhi.H"
+#include "particleRefinementTargets.H"
 #include "singlePhaseTransportModel.H"
 #include "pimpleControl.H"
 #include "fvOptions.H"
