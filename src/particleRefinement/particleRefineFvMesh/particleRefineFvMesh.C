@@ -192,7 +192,7 @@ Foam::labelList Foam::particleRefineFvMesh::targetLevels
                 const scalar h0 = std::cbrt(V[c])*std::pow(2.0, level[c]);
                 // Beyond this along any axis no level is refined
                 const scalar outer =
-                    max(shell, wakeL + wakeR) + (reach[maxLevel_] + margin)*h0;
+                    max(shell, wakeL + wakeR) + reach[maxLevel_]*h0;
                 const vector r = C[c] - X;
                 if
                 (
@@ -212,7 +212,7 @@ Foam::labelList Foam::particleRefineFvMesh::targetLevels
                     const scalar dr = max(scalar(0), across - wakeR);
                     dist = min(dist, std::sqrt(sqr(ds) + sqr(dr)));
                 }
-                const scalar inCells = dist/h0 - margin*Db/h0;
+                const scalar inCells = dist/h0;
                 for (label j = 0; j <= maxLevel_; ++j)
                 {
                     if (inCells <= reach[j])
@@ -356,6 +356,15 @@ Foam::particleRefineFvMesh::particleRefineFvMesh(const IOobject& io)
     started_(false)
 {
     readCoefficients();
+
+    // A mesh refined already (a restart) has had its initial refinement:
+    // its first update is any other's, so that the restart is exact
+    label finest = 0;
+    for (const label l : meshCutter().cellLevel())
+    {
+        finest = max(finest, l);
+    }
+    started_ = returnReduce(finest, maxOp<label>()) > 0;
 }
 
 
