@@ -129,7 +129,7 @@ int main(int argc, char *argv[])
 
     // Wall-clock seconds per phase, for the cost line at the end
     clockTime clock;
-    scalar fluidSeconds = 0, outputSeconds = 0;
+    scalar fluidSeconds = 0, outputSeconds = 0, meshSeconds = 0;
     progressLog progress(runTime);
 
     while (runTime.run())
@@ -158,7 +158,9 @@ int main(int argc, char *argv[])
             // fluid step (constant/dynamicMeshDict; none: no change)
             if (pimple.firstIter())
             {
+                fluidSeconds += clock.timeIncrement();
                 #include "updateMesh.H"
+                meshSeconds += clock.timeIncrement();
             }
 
             #include "UEqn.H"
@@ -221,15 +223,20 @@ int main(int argc, char *argv[])
     // The particles' time series (particles.dat) is output too
     const scalar seriesSeconds =
         particles.valid() ? particles->seriesSeconds() : 0;
-    Info<< costLine::text
-    (
-        wordList({"fluid", "DLM/FD", "granular", "communication", "output"}),
-        scalarList
-        ({
-            fluidSeconds, fdSeconds, granularSeconds, commSeconds,
-            outputSeconds + seriesSeconds
-        })
-    ).c_str() << nl << endl;
+    // (a changing mesh: the refinement's update, with the fluxes' correction
+    // and the particles' cell data made again, as a phase of its own)
+    wordList phases({"fluid", "DLM/FD", "granular", "communication", "output"});
+    scalarList seconds
+    ({
+        fluidSeconds, fdSeconds, granularSeconds, commSeconds,
+        outputSeconds + seriesSeconds
+    });
+    if (mesh.dynamic())
+    {
+        phases.append("mesh");
+        seconds.append(meshSeconds);
+    }
+    Info<< costLine::text(phases, seconds).c_str() << nl << endl;
     if (particles.valid())
     {
         particles->reportExchange();
