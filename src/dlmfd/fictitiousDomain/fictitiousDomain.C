@@ -436,6 +436,14 @@ void Foam::fictitiousDomain::updateMesh()
         }
         ghostOwner_[c] = index;
     }
+
+    // The mapping leaves the boundary values as mapped: those of the
+    // processor and cyclic patches (the neighbours' owners and forces the
+    // links and the exchange read) evaluated again
+    source_.correctBoundaryConditions();
+    deviation_.correctBoundaryConditions();
+    ghostOwner_.correctBoundaryConditions();
+    mirror_.correctBoundaryConditions();
 }
 
 

@@ -123,15 +123,47 @@ Foam::label Foam::wallLinks::oppositeFace
     const labelUList& own = mesh_.faceOwner();
     const labelUList& nei = mesh_.faceNeighbour();
     const vector n = S/mag(S);
+    const vectorField& Cf = mesh_.faceCentres();
     label best = -1;
     scalar bestDot = -0.9;
+    // Faces facing the same way (a face split by refinement: its parts)
+    // are told apart by where they lie, never by their order in the cell,
+    // which differs between a serial and a decomposed mesh: the nearest
+    // to the line from c along -n, then the least face centre
+    const scalar tie = 1e-9;
+    auto offLine = [&](const label f)
+    {
+        const vector r = Cf[f] - C[c];
+        return magSqr(r - (r & n)*n);
+    };
+    auto before = [&](const label f, const label g)
+    {
+        const scalar df = offLine(f), dg = offLine(g);
+        const scalar scale = max(df, dg) + magSqr(Cf[f] - Cf[g]);
+        if (mag(df - dg) > tie*scale)
+        {
+            return df < dg;
+        }
+        for (direction d = 0; d < vector::nComponents; ++d)
+        {
+            if (mag(Cf[f][d] - Cf[g][d]) > tie*mag(Cf[f] - Cf[g]))
+            {
+                return Cf[f][d] < Cf[g][d];
+            }
+        }
+        return false;
+    };
     for (const label f : mesh_.cells()[c])
     {
         const vector out = own[f] == c ? Sf[f] : -Sf[f];
         const scalar dot = (out & n)/mag(out);
-        if (dot < bestDot)
+        if
+        (
+            dot < bestDot - tie
+         || (best >= 0 && dot < bestDot + tie && before(f, best))
+        )
         {
-            bestDot = dot;
+            bestDot = min(dot, bestDot);
             best = f;
         }
     }
