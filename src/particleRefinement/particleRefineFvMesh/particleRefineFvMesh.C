@@ -59,6 +59,7 @@ Foam::List<Foam::vector> periodicShifts(const Foam::vector& period)
 } // End anonymous namespace
 
 
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 Foam::wordList Foam::particleRefineFvMesh::keywords()
@@ -235,12 +236,15 @@ Foam::bitSet Foam::particleRefineFvMesh::bodyCells() const
         findObject<volScalarField>("ghostOwner");
     const volVectorField* source =
         findObject<volVectorField>("lambdaSource");
+    const volScalarField* linked =
+        findObject<volScalarField>("wallLinkBody");
     forAll(cells, c)
     {
         if
         (
             (owner && (*owner)[c] >= 0)
          || (source && magSqr((*source)[c]) > 0)
+         || (linked && (*linked)[c] >= 0)
         )
         {
             cells.set(c);
@@ -335,6 +339,10 @@ bool Foam::particleRefineFvMesh::unrefineAwayFromTargets(const bitSet& keep)
     {
         return false;
     }
+
+    // (the mapping gives a merged cell its cells' volume-weighted mean:
+    // momentum is kept; the links' per-cell momentum, which is not a
+    // density, sits in cells bodyCells() protects)
     unrefine(points);
     return true;
 }
