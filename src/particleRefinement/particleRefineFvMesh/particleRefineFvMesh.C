@@ -167,6 +167,13 @@ Foam::labelList Foam::particleRefineFvMesh::targetLevels
         reach[j] = reach[j - 1] + bufferLayers_*std::pow(2.0, j - maxLevel_);
     }
 
+    // Each cell's base-mesh size, once for all bodies and images
+    scalarField h0(nCells());
+    forAll(h0, c)
+    {
+        h0[c] = std::cbrt(V[c])*std::pow(2.0, level[c]);
+    }
+
     const List<vector> shifts(periodicShifts(bodies.period()));
     const scalar travelSteps = 2*refineInterval_*bodies.deltaT();
 
@@ -190,10 +197,9 @@ Foam::labelList Foam::particleRefineFvMesh::targetLevels
             const point X = bodies.centres()[b] + s;
             forAll(C, c)
             {
-                const scalar h0 = std::cbrt(V[c])*std::pow(2.0, level[c]);
                 // Beyond this along any axis no level is refined
                 const scalar outer =
-                    max(shell, wakeL + wakeR) + reach[maxLevel_]*h0;
+                    max(shell, wakeL + wakeR) + reach[maxLevel_]*h0[c];
                 const vector r = C[c] - X;
                 if
                 (
@@ -213,7 +219,7 @@ Foam::labelList Foam::particleRefineFvMesh::targetLevels
                     const scalar dr = max(scalar(0), across - wakeR);
                     dist = min(dist, std::sqrt(sqr(ds) + sqr(dr)));
                 }
-                const scalar inCells = dist/h0;
+                const scalar inCells = dist/h0[c];
                 for (label j = 0; j <= maxLevel_; ++j)
                 {
                     if (inCells <= reach[j])
