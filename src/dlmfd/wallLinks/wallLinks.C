@@ -263,8 +263,8 @@ Foam::PtrList<Foam::vectorField> Foam::wallLinks::neighbourVelocities
 
 namespace
 {
-    // A field of what the links paid: read and written with the links only
-    Foam::IOobject paidIO
+    // A list of the links' history: read and written with the links only
+    Foam::IOobject historyIO
     (
         const Foam::fvMesh& mesh,
         const Foam::word& name,
@@ -273,7 +273,7 @@ namespace
     {
         return Foam::IOobject
         (
-            name, mesh.time().timeName(), mesh,
+            name, mesh.time().timeName(), "uniform", mesh,
             on ? Foam::IOobject::READ_IF_PRESENT : Foam::IOobject::NO_READ,
             on ? Foam::IOobject::AUTO_WRITE : Foam::IOobject::NO_WRITE
         );
@@ -285,25 +285,18 @@ Foam::wallLinks::wallLinks(const fvMesh& mesh, const bool on)
 :
     mesh_(mesh),
     links_(),
-    paidMomentum_
-    (
-        paidIO(mesh, "wallLinkMomentum", on),
-        mesh,
-        dimensionedVector(dimVelocity*dimVol, Zero)
-    ),
-    paidMoment_
-    (
-        paidIO(mesh, "wallLinkMoment", on),
-        mesh,
-        dimensionedVector(dimVelocity*dimVol*dimLength, Zero)
-    ),
-    paidBody_
-    (
-        paidIO(mesh, "wallLinkBody", on),
-        mesh,
-        dimensionedScalar("none", dimless, -1)
-    )
-{}
+    historyMomentum_(historyIO(mesh, "wallLinkHistoryMomentum", on)),
+    historyMoment_(historyIO(mesh, "wallLinkHistoryMoment", on))
+{
+    if (historyMomentum_.size() != historyMoment_.size())
+    {
+        FatalErrorInFunction
+            << historyMomentum_.objectPath() << " has "
+            << historyMomentum_.size() << " entries and "
+            << historyMoment_.objectPath() << " " << historyMoment_.size()
+            << "; both need one per particle" << exit(FatalError);
+    }
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -395,8 +388,10 @@ void Foam::wallLinks::update
 
     // Links between two fluid cells that pass through a body (an edge or
     // a corner cut off): the fluid cells within two faces of a body's
-    // cell, each with that body (the first met; across coupled patches
-    // too, so that both sides of a face agree)
+    // cell, each with that body (the nearest in hops, of two met at the
+    // same hop the lower index: not the first in face order, which
+    // changes with the decomposition; across coupled patches too, so
+    // that both sides of a face agree)
     volScalarField near
     (
         IOobject
@@ -438,17 +433,22 @@ void Foam::wallLinks::update
         }
         mark.correctBoundaryConditions();
         const scalarField reached(mark.primitiveField());
+        const scalarField before(nearBody);
+        const auto meet = [&](const label celli, const scalar m)
+        {
+            if
+            (
+                body[celli] < 0 && before[celli] < 0 && m >= 0
+             && (nearBody[celli] < 0 || m < nearBody[celli])
+            )
+            {
+                nearBody[celli] = m;
+            }
+        };
         forAll(nei, f)
         {
-            const label o = own[f], n = nei[f];
-            if (body[n] < 0 && nearBody[n] < 0 && reached[o] >= 0)
-            {
-                nearBody[n] = reached[o];
-            }
-            if (body[o] < 0 && nearBody[o] < 0 && reached[n] >= 0)
-            {
-                nearBody[o] = reached[n];
-            }
+            meet(nei[f], reached[own[f]]);
+            meet(own[f], reached[nei[f]]);
         }
         forAll(mesh_.boundary(), patchi)
         {
@@ -463,11 +463,7 @@ void Foam::wallLinks::update
             );
             forAll(p.faceCells(), i)
             {
-                const label l = p.faceCells()[i];
-                if (body[l] < 0 && nearBody[l] < 0 && markNbr[i] >= 0)
-                {
-                    nearBody[l] = markNbr[i];
-                }
+                meet(p.faceCells()[i], markNbr[i]);
             }
         }
     }
@@ -501,6 +497,37 @@ void Foam::wallLinks::update
         links_.append(L);
         return true;
     };
+    // The bodies a face between two fluid cells may pass through: the
+    // two cells' near bodies, the lower index first (both sides of a
+    // coupled face see the same pair)
+    const auto candidates = [](const scalar a, const scalar b)
+    {
+        FixedList<label, 2> c({label(min(a, b)), label(max(a, b))});
+        if (c[0] < 0 || c[0] == c[1])
+        {
+            c[0] = c[1];
+            c[1] = -1;
+        }
+        return c;
+    };
+    // L's link through the first candidate the segment passes through:
+    // that body, or -1
+    const auto addThroughAny = [&](const link& L, const point& a,
+        const point& b, const FixedList<label, 2>& bodies, const point& xf)
+    {
+        for (const label bi : bodies)
+        {
+            if (bi < 0)
+            {
+                break;
+            }
+            if (addThrough(L, a, b, bi, xf))
+            {
+                return bi;
+            }
+        }
+        return label(-1);
+    };
     forAll(nei, f)
     {
         const label o = own[f], n = nei[f];
@@ -508,16 +535,15 @@ void Foam::wallLinks::update
         {
             continue;
         }
-        const label bi = label(max(nearBody[o], nearBody[n]));
-        if (bi < 0)
-        {
-            continue;
-        }
         link A;
         A.face = f;
         A.fluid = o;
         A.solid = n;
-        if (addThrough(A, C[o], C[n], bi, Cf[f]))
+        const label bi = addThroughAny
+        (
+            A, C[o], C[n], candidates(nearBody[o], nearBody[n]), Cf[f]
+        );
+        if (bi >= 0)
         {
             link B(A);
             B.fluid = n;
@@ -541,8 +567,7 @@ void Foam::wallLinks::update
         forAll(p.faceCells(), i)
         {
             const label l = p.faceCells()[i];
-            const label bi = label(max(nearBody[l], nearNbr[i]));
-            if (body[l] >= 0 || bodyNbr[i] >= 0 || bi < 0)
+            if (body[l] >= 0 || bodyNbr[i] >= 0)
             {
                 continue;
             }
@@ -551,7 +576,11 @@ void Foam::wallLinks::update
             L.patch = patchi;
             L.patchFace = i;
             L.fluid = l;
-            addThrough(L, C[l], C[l] + delta[i], bi, p.Cf()[i]);
+            addThroughAny
+            (
+                L, C[l], C[l] + delta[i], candidates(nearBody[l], nearNbr[i]),
+                p.Cf()[i]
+            );
         }
     }
 
@@ -602,7 +631,6 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::wallLinks::matrix
     const surfaceScalarField K(nuf*mesh_.magSf());
     const surfaceScalarField& dc = mesh_.deltaCoeffs();
     const labelUList& own = mesh_.owner();
-    const PtrList<vectorField> uNbr(neighbourVelocities(U));
     scalarField& diag = m.diag();
     vectorField& source = m.source();
     scalarField& upper = m.upper();
@@ -629,14 +657,17 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::wallLinks::matrix
         // the face, less the Laplacian's k0 (u_c - u_g)
         diag[c] += L.coeffs[1] - k0;
         source[c] -= L.coeffs[0]*L.uWall;
+        // Across a coupled patch the coefficient of the other side's cell
+        // is minus the patch's boundaryCoeffs (the solvers' interfaces),
+        // so the row stays implicit there too: the same matrix on any
+        // decomposition and across cyclic patches
         if (L.face >= 0)
         {
             (own[L.face] == c ? upper[L.face] : lower[L.face]) += k0;
         }
         else
         {
-            L.uSolidExplicit = uNbr[L.patch][L.patchFace];
-            source[c] -= k0*L.uSolidExplicit;
+            m.boundaryCoeffs()[L.patch][L.patchFace] -= k0*vector::one;
         }
         const label fo = L.opposite;
         if (L.farWall)
@@ -645,9 +676,9 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::wallLinks::matrix
         }
         else if (fo >= mesh_.nInternalFaces())
         {
-            L.uOppositeExplicit =
-                oppositeVelocity(L, U.primitiveField(), uNbr);
-            source[c] -= L.coeffs[2]*L.uOppositeExplicit;
+            const label patchi = mesh_.boundaryMesh().whichPatch(fo);
+            m.boundaryCoeffs()[patchi][fo - mesh_.boundaryMesh()[patchi].start()]
+                -= L.coeffs[2]*vector::one;
         }
         else if (fo >= 0)
         {

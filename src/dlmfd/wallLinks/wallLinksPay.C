@@ -11,8 +11,8 @@ License
 
 Description
     Foam::wallLinks::pay: the momentum the bodies pay for what the fluid
-    gained at their links in a step, with the share of the last step's
-    payment that the time scheme's history carries into this one.
+    gained at their links in a step, with the share of each body's history
+    that the time scheme carries into this one.
 
 \*---------------------------------------------------------------------------*/
 
@@ -29,56 +29,25 @@ void Foam::wallLinks::pay
     List<vector>& moment
 )
 {
-    // (c - 1)/c of what each cell gained last step, to the body that paid
-    const scalar carried = (ddtCoeff - 1)/ddtCoeff;
     const label nBodies = momentum.size();
-    vectorField& M = paidMomentum_.primitiveFieldRef();
-    vectorField& A = paidMoment_.primitiveFieldRef();
-    scalarField& B = paidBody_.primitiveFieldRef();
-    forAll(M, celli)
+    if (historyMomentum_.size() != nBodies)
     {
-        const label body = label(B[celli]);
-        if (body < 0)
-        {
-            continue;
-        }
-        M[celli] *= carried;
-        A[celli] *= carried;
-        if (body < nBodies)
-        {
-            momentum[body] += M[celli];
-            moment[body] += A[celli];
-        }
-        if (M[celli] == vector::zero)
-        {
-            B[celli] = -1;
-        }
-    }
-    // A cell whose links now go to another body: its carried share was that
-    // body's (paid above), this step's share starts afresh
-    for (const link& L : links_)
-    {
-        if (label(B[L.fluid]) != L.body)
-        {
-            M[L.fluid] = Zero;
-            A[L.fluid] = Zero;
-            B[L.fluid] = L.body;
-        }
+        // A restart's history is one per particle; a body added later
+        // starts without one
+        historyMomentum_.setSize(nBodies, Zero);
+        historyMoment_.setSize(nBodies, Zero);
     }
 
-    // This step's flux: a 1/c share, kept per cell for the next step
+    // This step's flux on this rank: a 1/c share per body
+    List<vector> gained(nBodies, Zero), gainedMoment(nBodies, Zero);
     const vectorField& u = U.primitiveField();
     const PtrList<vectorField> uNbr(neighbourVelocities(U));
-    const label nInternal = mesh_.nInternalFaces();
     for (const link& L : links_)
     {
         const label c = L.fluid;
-        // c's row: the link's flux, its third point as the matrix took it
-        // (explicitly across a coupled patch)
-        const vector uE =
-            L.farWall ? L.uFar
-          : L.opposite >= nInternal ? L.uOppositeExplicit
-          : oppositeVelocity(L, u, uNbr);
+        // c's row: the link's flux (implicit in u_E, across a coupled
+        // patch too)
+        const vector uE = L.farWall ? L.uFar : oppositeVelocity(L, u, uNbr);
         vector gain =
           - (
                 L.coeffs[0]*L.uWall + L.coeffs[1]*u[c]
@@ -90,25 +59,38 @@ void Foam::wallLinks::pay
         // its own link through the body
         if (!L.through)
         {
-            const scalar k0 = L.coeffs[3];
-            if (L.face >= 0)
-            {
-                gain += k0*(u[c] - u[L.solid]);
-            }
-            else
-            {
-                // Across a coupled patch c's row kept the Laplacian's
-                // coupling to g, less the matrix's explicit k0 u_g
-                const vector uG = uNbr[L.patch][L.patchFace];
-                gain += k0*(u[c] - uG) + k0*(uG - L.uSolidExplicit);
-            }
+            const vector uG =
+                L.face >= 0 ? u[L.solid] : uNbr[L.patch][L.patchFace];
+            gain += L.coeffs[3]*(u[c] - uG);
         }
         const vector p = dt/ddtCoeff*gain;
-        momentum[L.body] += p;
-        moment[L.body] += L.arm ^ p;
-        M[c] += p;
-        A[c] += L.arm ^ p;
-        B[c] = L.body;
+        gained[L.body] += p;
+        gainedMoment[L.body] += L.arm ^ p;
+    }
+
+    // Each rank pays its own share; (c - 1)/c of the history (the same on
+    // every rank) once, on the master
+    const scalar carried = (ddtCoeff - 1)/ddtCoeff;
+    for (label b = 0; b < nBodies; ++b)
+    {
+        momentum[b] += gained[b];
+        moment[b] += gainedMoment[b];
+        if (Pstream::master())
+        {
+            momentum[b] += carried*historyMomentum_[b];
+            moment[b] += carried*historyMoment_[b];
+        }
+    }
+
+    // The history for the next step: this step's gain of every rank
+    Pstream::listCombineGather(gained, plusEqOp<vector>());
+    Pstream::listCombineScatter(gained);
+    Pstream::listCombineGather(gainedMoment, plusEqOp<vector>());
+    Pstream::listCombineScatter(gainedMoment);
+    for (label b = 0; b < nBodies; ++b)
+    {
+        historyMomentum_[b] = gained[b] + carried*historyMomentum_[b];
+        historyMoment_[b] = gainedMoment[b] + carried*historyMoment_[b];
     }
 }
 

@@ -242,15 +242,12 @@ Foam::bitSet Foam::particleRefineFvMesh::bodyCells() const
         findObject<volScalarField>("ghostOwner");
     const volVectorField* source =
         findObject<volVectorField>("lambdaSource");
-    const volScalarField* linked =
-        findObject<volScalarField>("wallLinkBody");
     forAll(cells, c)
     {
         if
         (
             (owner && (*owner)[c] >= 0)
          || (source && magSqr((*source)[c]) > 0)
-         || (linked && (*linked)[c] >= 0)
         )
         {
             cells.set(c);
