@@ -48,21 +48,11 @@ def growth(L, dx, n):
     return q**(n - 1)
 
 
-def column_mesh(blockMeshDict, collisionProperties, N, W, H, core):
-    """A closed box x, y in [-W, W], z in [0, H] (units of D): uniform at
-    D/dx = N in the column |x|, |y| <= core along the whole height, graded
-    geometrically outside it. Rewrites the tutorial's blockMeshDict (from its
-    comment line "// A box" to "boundary") and the granular domain of its
-    collisionProperties; returns the number of cells"""
-    dx = 1.0 / N
-    side = W - core
-    nSide = max(6, round(side / (4 * dx) ** 0.5 * 1.5))
-    nCore = round(2 * core * N)
-    r = growth(side, dx, nSide)
-    n = 2 * nSide + nCore
-    g = (f"(({side / (2 * W)!r} {nSide / n!r} {1 / r!r}) ({2 * core / (2 * W)!r} {nCore / n!r} 1) "
-         f"({side / (2 * W)!r} {nSide / n!r} {r!r}))")
-    nz = round(H * N)
+def write_box(blockMeshDict, collisionProperties, W, H, n, nz, grading="1"):
+    """A closed box x, y in [-W, W], z in [0, H] (units of D) of n x n x nz
+    cells, grading the x and y grading of simpleGrading: rewrites the
+    tutorial's blockMeshDict (from its comment line "// A box" to
+    "boundary") and the granular domain of its collisionProperties"""
     sub(blockMeshDict, r"^// A box.*?^boundary",
         f"""vertices
 (
@@ -72,10 +62,25 @@ def column_mesh(blockMeshDict, collisionProperties, N, W, H, core):
 
 blocks
 (
-    hex (0 1 2 3 4 5 6 7) ({n} {n} {nz}) simpleGrading ({g} {g} 1)
+    hex (0 1 2 3 4 5 6 7) ({n} {n} {nz}) simpleGrading ({grading} {grading} 1)
 );
 
 boundary""")
     sub(collisionProperties, r"min\s+\([^)]*\);", f"min     (-{W} -{W} 0);")
     sub(collisionProperties, r"max\s+\([^)]*\);", f"max     ({W} {W} {H});")
     return n * n * nz
+
+
+def column_mesh(blockMeshDict, collisionProperties, N, W, H, core):
+    """A closed box x, y in [-W, W], z in [0, H] (units of D): uniform at
+    D/dx = N in the column |x|, |y| <= core along the whole height, graded
+    geometrically outside it (write_box); returns the number of cells"""
+    dx = 1.0 / N
+    side = W - core
+    nSide = max(6, round(side / (4 * dx) ** 0.5 * 1.5))
+    nCore = round(2 * core * N)
+    r = growth(side, dx, nSide)
+    n = 2 * nSide + nCore
+    g = (f"(({side / (2 * W)!r} {nSide / n!r} {1 / r!r}) ({2 * core / (2 * W)!r} {nCore / n!r} 1) "
+         f"({side / (2 * W)!r} {nSide / n!r} {r!r}))")
+    return write_box(blockMeshDict, collisionProperties, W, H, n, round(H * N), g)

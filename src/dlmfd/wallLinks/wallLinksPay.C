@@ -38,8 +38,9 @@ void Foam::wallLinks::pay
         historyMoment_.setSize(nBodies, Zero);
     }
 
-    // This step's flux on this rank: a 1/c share per body
-    List<vector> gained(nBodies, Zero), gainedMoment(nBodies, Zero);
+    // This step's flux on this rank: a 1/c share per body, its momentum
+    // then its moment (one list: one reduction below)
+    List<vector> gained(2*nBodies, Zero);
     const vectorField& u = U.primitiveField();
     const PtrList<vectorField> uNbr(neighbourVelocities(U));
     for (const link& L : links_)
@@ -65,7 +66,7 @@ void Foam::wallLinks::pay
         }
         const vector p = dt/ddtCoeff*gain;
         gained[L.body] += p;
-        gainedMoment[L.body] += L.arm ^ p;
+        gained[nBodies + L.body] += L.arm ^ p;
     }
 
     // Each rank pays its own share; (c - 1)/c of the history (the same on
@@ -74,7 +75,7 @@ void Foam::wallLinks::pay
     for (label b = 0; b < nBodies; ++b)
     {
         momentum[b] += gained[b];
-        moment[b] += gainedMoment[b];
+        moment[b] += gained[nBodies + b];
         if (Pstream::master())
         {
             momentum[b] += carried*historyMomentum_[b];
@@ -85,12 +86,10 @@ void Foam::wallLinks::pay
     // The history for the next step: this step's gain of every rank
     Pstream::listCombineGather(gained, plusEqOp<vector>());
     Pstream::listCombineScatter(gained);
-    Pstream::listCombineGather(gainedMoment, plusEqOp<vector>());
-    Pstream::listCombineScatter(gainedMoment);
     for (label b = 0; b < nBodies; ++b)
     {
         historyMomentum_[b] = gained[b] + carried*historyMomentum_[b];
-        historyMoment_[b] = gainedMoment[b] + carried*historyMoment_[b];
+        historyMoment_[b] = gained[nBodies + b] + carried*historyMoment_[b];
     }
 }
 
