@@ -238,6 +238,111 @@ TEST(fictitiousDomain, rigidFluidNeedsNoForceAndFixedBodiesStayFixed)
 }
 
 
+TEST(fictitiousDomain, bodiesListedInAnotherOrderWithTheirGlobalIndicesGiveTheSameBits)
+{
+    // The same three bodies (two spheres 1.2 cells apart, whose ghost
+    // cells meet, and a tilted cube), listed in the scene's order and in
+    // another order with their global indices, over two steps (the second
+    // reads the first's ghost owners and deviations): the same fields to
+    // the bit, the owner field holding global indices, and each body's
+    // result the same whatever its place
+    particleShapes::sphere ball("ball", 0.3);
+    particleShapes::platonicSolid cube("cube", "cube", 0.25);
+    List<fictitiousDomain::body> scene(3);
+    for (auto& b : scene)
+    {
+        b.excessDensity = 1;
+        b.V = vector(0.01, -0.02, 0.03);
+        b.omega = vector(0.5, 0, -0.2);
+    }
+    scene[0].shape = &ball;
+    scene[0].centre = point(0.26, 0.31, 0.5);
+    scene[1].shape = &ball;
+    scene[1].centre = point(0.61, 0.32, 0.48);
+    scene[2].shape = &cube;
+    scene[2].centre = point(0.5, 0.73, 0.55);
+    scene[2].R = quaternion(normalised(vector(1, 2, 3)), 0.7).R();
+    const labelList order({2, 0, 1});
+
+    for (const word treatment : {"fluidStencil", "ghostCells"})
+    {
+        SCOPED_TRACE(treatment);
+        dictionary dict;
+        dict.add("surfaceTreatment", treatment);
+
+        test::foamTestCase tcA, tcB;
+        const fvMesh& meshA = tcA.makeBoxMesh(24, 24, 24, vector::one);
+        const fvMesh& meshB = tcB.makeBoxMesh(24, 24, 24, vector::one);
+        tmp<volVectorField> tUA = makeU(meshA);
+        tmp<volVectorField> tUB = makeU(meshB);
+        fictitiousDomain fdA(meshA, dict), fdB(meshB, dict);
+
+        List<fictitiousDomain::body> inOrder(scene), reordered(3);
+        forAll(order, b)
+        {
+            reordered[b] = scene[order[b]];
+            reordered[b].index = order[b];
+        }
+        for (label step = 0; step < 2; ++step)
+        {
+            const List<fictitiousDomain::result> resA
+            (
+                fdA.solve(tUA.ref(), inOrder, 0.01)
+            );
+            const List<fictitiousDomain::result> resB
+            (
+                fdB.solve(tUB.ref(), reordered, 0.01)
+            );
+            forAll(order, b)
+            {
+                const fictitiousDomain::result& a = resA[order[b]];
+                const fictitiousDomain::result& r = resB[b];
+                EXPECT_EQ(a.dV, r.dV) << "step " << step << " body " << b;
+                EXPECT_EQ(a.dOmega, r.dOmega) << "step " << step;
+                EXPECT_EQ(a.sumLambda, r.sumLambda) << "step " << step;
+                EXPECT_EQ(a.interiorCells, r.interiorCells);
+            }
+            EXPECT_EQ(tUA().primitiveField(), tUB().primitiveField())
+                << "step " << step;
+            EXPECT_EQ
+            (
+                fdA.source().primitiveField(), fdB.source().primitiveField()
+            ) << "step " << step;
+            EXPECT_EQ
+            (
+                fdA.ghostOwner().primitiveField(),
+                fdB.ghostOwner().primitiveField()
+            ) << "step " << step;
+            EXPECT_EQ
+            (
+                fdA.deviation().primitiveField(),
+                fdB.deviation().primitiveField()
+            ) << "step " << step;
+            // The bodies move on a little
+            for (auto* list : {&inOrder, &reordered})
+            {
+                for (auto& b : *list)
+                {
+                    b.centre += vector(0.013, 0.007, -0.011);
+                }
+            }
+        }
+        if (treatment == "ghostCells")
+        {
+            // Every global index of the scene owns cells
+            const scalarField& o = fdA.ghostOwner().primitiveField();
+            EXPECT_EQ(max(o), 2);
+            labelHashSet owners;
+            for (const scalar x : o)
+            {
+                owners.insert(label(x));
+            }
+            EXPECT_EQ(owners.size(), 4);
+        }
+    }
+}
+
+
 TEST(fictitiousDomain, cellClaimedByTwoParticlesGoesToTheCloserCentre)
 {
     // Two spheres overlapping (as in a contact): no cell serves both, and

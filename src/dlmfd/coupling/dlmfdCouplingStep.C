@@ -43,6 +43,7 @@ Foam::List<Foam::fictitiousDomain::body> Foam::dlmfdCoupling::predictedBodies
         V0[i] = p.velocity();
         omega0[i] = p.omega();
         b.shape = &p.shape();
+        b.index = granular_.globalIndex(i);
         b.R = p.R();
         b.free = p.motion() == motionKind::free;
         b.rotates = p.rotates();
@@ -178,6 +179,7 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::dlmfdCoupling::wallLinkMatrix
     {
         const rigidParticle& p = granular_.particle(i);
         bodies[i].shape = &p.shape();
+        bodies[i].index = granular_.globalIndex(i);
         bodies[i].centre = p.position();
         bodies[i].R = p.R();
         bodies[i].V = p.velocity();

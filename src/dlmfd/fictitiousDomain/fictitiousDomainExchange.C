@@ -28,6 +28,7 @@ Description
 void Foam::fictitiousDomain::collect
 (
     const label b,
+    const label global,
     const candidates& cand,
     const vectorField& u,
     labelList& localIndex,
@@ -118,7 +119,7 @@ void Foam::fictitiousDomain::collect
     {
         localIndex[c] = -1;
     }
-    con.body = b;
+    con.body = global;
     if (treatment_ == surfaceTreatment::ghostCells)
     {
         // A cell's deviation is this body's only if it held the cell
@@ -127,7 +128,7 @@ void Foam::fictitiousDomain::collect
         {
             const label c = cellList[i];
             con.deviation[i] =
-                label(ghostOwner_[c]) == b ? deviation_[c] : Zero;
+                label(ghostOwner_[c]) == global ? deviation_[c] : Zero;
         }
     }
     if (needsFluidRelaxation())
@@ -210,6 +211,8 @@ Foam::fictitiousDomain::solve
     source_.primitiveFieldRef() = Zero;
 
 
+    places_ = bodyPlaces(bodies);
+
     // Every body's candidate points on this rank, and the cells shared out
     candidates cand;
     findCandidates(bodies, cand);
@@ -240,7 +243,11 @@ Foam::fictitiousDomain::solve
         {
             contribution con;
             labelList cells;
-            collect(b, cand, u, localIndex, con, cells);
+            collect
+            (
+                b, bodyPlaces::global(bodies, b), cand, u, localIndex, con,
+                cells
+            );
             if (released.size())
             {
                 con.released = released[b];
@@ -290,7 +297,16 @@ Foam::fictitiousDomain::solve
         {
             forAll(incoming[r], j)
             {
-                const label b = incoming[r][j].body;
+                // Sent by global index: the body's place here
+                const label b = places_(incoming[r][j].body);
+                if (b < 0)
+                {
+                    FatalErrorInFunction
+                        << "rank " << r << " sent the cells of particle "
+                        << incoming[r][j].body << " (global index), which"
+                        << " rank " << me << " does not hold"
+                        << exit(FatalError);
+                }
                 partsOf[b].append(&incoming[r][j]);
                 whereFrom[b].append(labelPair(r, j));
             }
@@ -387,7 +403,7 @@ Foam::fictitiousDomain::solve
                 for (label i = 0; i < nInside; ++i)
                 {
                     deviation_[cells[i]] = backDev[j][i];
-                    ghostOwner_[cells[i]] = b;
+                    ghostOwner_[cells[i]] = bodyPlaces::global(bodies, b);
                     if (mirrored)
                     {
                         mirror_[cells[i]] = backDev[j][cells.size() + i];

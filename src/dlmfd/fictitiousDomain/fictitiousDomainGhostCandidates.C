@@ -121,12 +121,9 @@ void Foam::fictitiousDomain::releasedDeviations
     const scalarField& V = mesh_.V();
     forAll(ghostOwner_, c)
     {
-        const label o = label(ghostOwner_[c]);
-        if
-        (
-            o < 0 || o >= bodies.size()
-         || (owners_.owner(c) == o && owners_.inside(c))
-        )
+        // The owner field holds global indices
+        const label o = places_(label(ghostOwner_[c]));
+        if (o < 0 || (owners_.owner(c) == o && owners_.inside(c)))
         {
             continue;
         }

@@ -314,6 +314,27 @@ void Foam::wallLinks::update
     const vectorField& Cf = mesh_.Cf().primitiveField();
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();
+    // The owner field holds global indices (so do the marks below, which
+    // cross the ranks and decide ties by index): a body's place in bodies
+    // is looked up where its motion is needed
+    const fictitiousDomain::bodyPlaces places(bodies);
+    globalOf_.setSize(bodies.size());
+    forAll(bodies, b)
+    {
+        globalOf_[b] = fictitiousDomain::bodyPlaces::global(bodies, b);
+    }
+    auto placeOf = [&](const label global)
+    {
+        const label b = places(global);
+        if (b < 0)
+        {
+            FatalErrorInFunction
+                << "a ghost cell belongs to particle " << global
+                << " (global index), which this rank does not hold"
+                << exit(FatalError);
+        }
+        return b;
+    };
     const scalarField& body = owner.primitiveField();
     PtrList<scalarField> ownerNbr(mesh_.boundary().size());
     PtrList<vectorField> deltaNbr(mesh_.boundary().size());
@@ -336,10 +357,11 @@ void Foam::wallLinks::update
     auto add = [&](link& L, const point& a, const point& b, const label bi,
         const vector& S, const point& xf)
     {
+        const label bp = placeOf(bi);
         const scalar t =
-            crossing(bodies[bi], images, a, b, L.uWall, L.arm);
+            crossing(bodies[bp], images, a, b, L.uWall, L.arm);
         const vector e = (b - a)/mag(b - a);
-        L.body = bi;
+        L.body = bp;
         L.d = t*mag(b - a);
         L.a = (xf - a) & e;
         // The third point: the fluid cell beyond c's opposite face, or
@@ -359,7 +381,7 @@ void Foam::wallLinks::update
             vector arm;
             L.hE = crossing
             (
-                bodies[beyondBody], images, a, beyond, L.uFar, arm
+                bodies[placeOf(beyondBody)], images, a, beyond, L.uFar, arm
             )*mag(beyond - a);
             L.farWall = true;
             L.opposite = -1;
@@ -474,13 +496,14 @@ void Foam::wallLinks::update
     const auto addThrough = [&](link L, const point& a, const point& b,
         const label bi, const point& xf)
     {
+        const label bp = placeOf(bi);
         scalar tIn, tOut;
         vector uIn, uOut, armIn, armOut;
         if
         (
             !passesThrough
             (
-                bodies[bi], images, a, b, tIn, tOut, uIn, uOut, armIn,
+                bodies[bp], images, a, b, tIn, tOut, uIn, uOut, armIn,
                 armOut
             )
         )
@@ -493,7 +516,7 @@ void Foam::wallLinks::update
         L.a = (xf - a) & (b - a)/Delta;
         L.uWall = uIn;
         L.arm = armIn;
-        L.body = bi;
+        L.body = bp;
         links_.append(L);
         return true;
     };

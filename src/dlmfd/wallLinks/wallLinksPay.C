@@ -30,12 +30,20 @@ void Foam::wallLinks::pay
 )
 {
     const label nBodies = momentum.size();
-    if (historyMomentum_.size() != nBodies)
+    if (globalOf_.size() != nBodies)
     {
-        // A restart's history is one per particle; a body added later
-        // starts without one
-        historyMomentum_.setSize(nBodies, Zero);
-        historyMoment_.setSize(nBodies, Zero);
+        FatalErrorInFunction
+            << "paying for " << nBodies << " bodies, but the links were"
+            << " found (update) for " << globalOf_.size()
+            << exit(FatalError);
+    }
+    // A restart's history is one per particle, by global index; a body
+    // added later starts without one
+    const label nGlobal = nBodies ? max(globalOf_) + 1 : 0;
+    if (historyMomentum_.size() < nGlobal)
+    {
+        historyMomentum_.setSize(nGlobal, Zero);
+        historyMoment_.setSize(nGlobal, Zero);
     }
 
     // This step's flux on this rank: a 1/c share per body, its momentum
@@ -78,8 +86,8 @@ void Foam::wallLinks::pay
         moment[b] += gained[nBodies + b];
         if (Pstream::master())
         {
-            momentum[b] += carried*historyMomentum_[b];
-            moment[b] += carried*historyMoment_[b];
+            momentum[b] += carried*historyMomentum_[globalOf_[b]];
+            moment[b] += carried*historyMoment_[globalOf_[b]];
         }
     }
 
@@ -88,8 +96,10 @@ void Foam::wallLinks::pay
     Pstream::listCombineScatter(gained);
     for (label b = 0; b < nBodies; ++b)
     {
-        historyMomentum_[b] = gained[b] + carried*historyMomentum_[b];
-        historyMoment_[b] = gained[nBodies + b] + carried*historyMoment_[b];
+        vector& H = historyMomentum_[globalOf_[b]];
+        vector& HMoment = historyMoment_[globalOf_[b]];
+        H = gained[b] + carried*H;
+        HMoment = gained[nBodies + b] + carried*HMoment;
     }
 }
 

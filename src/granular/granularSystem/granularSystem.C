@@ -369,6 +369,7 @@ Foam::label Foam::granularSystem::addParticle
         shapes_[shapei], materials_.density(materiali), x, q
     );
     ids_.append(id);
+    globalIndex_.append(i);
     shapeOf_.append(shapei);
     materialOf_.append(materiali);
     return i;
@@ -379,6 +380,7 @@ void Foam::granularSystem::clearParticles()
 {
     particles_.clear();
     ids_.clear();
+    globalIndex_.clear();
     shapeOf_.clear();
     materialOf_.clear();
     updateParticleData();

@@ -121,7 +121,7 @@ void Foam::granularSystem::addWallForces(const label i, const scalar dt)
         contactResolution::wall
         (
             laws_->law(materialOf_[i], wallMaterial_[w]), c, pi, dt,
-            history_, i, w
+            history_, globalIndex_[i], w
         );
         ++stats_.nWallContacts;
         noteOverlap(i, -1 - w, c.overlap/Deq_[i]);
@@ -167,7 +167,8 @@ void Foam::granularSystem::addPairForces(const scalar dt)
         contactResolution::pair
         (
             laws_->law(materialOf_[i], materialOf_[j]), c, pi, pj,
-            xjImage - pj.position(), dt, history_, i, j
+            xjImage - pj.position(), dt, history_, globalIndex_[i],
+            globalIndex_[j]
         );
         ++stats_.nContacts;
         noteOverlap(i, j, c.overlap/min(Deq_[i], Deq_[j]));

@@ -216,6 +216,7 @@ void Foam::granularSystem::readParticles
 {
     particles_.clear();
     ids_.clear();
+    globalIndex_.clear();
     shapeOf_.clear();
     materialOf_.clear();
 
@@ -358,6 +359,8 @@ void Foam::granularSystem::readParticles
                     << " particle that is not in the file"
                     << exit(FatalIOError);
             }
+            // A contact names its particles by their places in the file:
+            // their global indices
             history_.set(i, j, history);
             t = token(cs);
         }
@@ -368,6 +371,19 @@ void Foam::granularSystem::readParticles
 
 void Foam::granularSystem::writeParticles(const fileName& dir) const
 {
+    // The file lists the scene in global order, and its contacts name
+    // particles by their places in it
+    for (label i = 0; i < size(); ++i)
+    {
+        if (globalIndex_[i] != i)
+        {
+            FatalErrorInFunction
+                << "writing " << dir/"particles" << ": particle " << ids_[i]
+                << " of global index " << globalIndex_[i] << " is at place "
+                << i << "; only a system holding the whole scene in global"
+                << " order writes a particle file" << exit(FatalError);
+        }
+    }
     mkDir(dir);
     const fileName file(dir/"particles");
     const fileName tmp(file + ".tmp");
@@ -403,7 +419,8 @@ void Foam::granularSystem::writeParticles(const fileName& dir) const
 
         if (!history_.empty())
         {
-            // Sorted, so that equal states write equal files
+            // Sorted, so that equal states write equal files; keyed by
+            // global index, a particle's place in this file
             os  << "\ncontacts\n(\n";
             for (const auto& c : history_.entries())
             {
