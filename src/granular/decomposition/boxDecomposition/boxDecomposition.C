@@ -1,0 +1,184 @@
+/*---------------------------------------------------------------------------*\
+  dlmfdFoam: DLM/FD particle-resolved simulation of particulate flows
+-------------------------------------------------------------------------------
+License
+    This file is part of dlmfdFoam, an extension of OpenFOAM.
+
+    dlmfdFoam is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by the
+    Free Software Foundation, either version 3 of the License, or (at your
+    option) any later version. See <http://www.gnu.org/licenses/>.
+
+\*---------------------------------------------------------------------------*/
+
+#include "boxDecomposition.H"
+#include "error.H"
+
+#include <cmath>
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::label Foam::boxDecomposition::slab
+(
+    const direction d,
+    const scalar x
+) const
+{
+    const scalar lo = domain_.min()[d];
+    const scalar L = domain_.max()[d] - lo;
+    scalar s = (x - lo)/L;
+    if (periodic_[d])
+    {
+        s -= std::floor(s);
+    }
+    else if (s < 0 || s > 1)
+    {
+        return -1;
+    }
+    // [lo, hi) per box, the last one closed
+    return min(label(s*n_[d]), n_[d] - 1);
+}
+
+
+Foam::scalar Foam::boxDecomposition::slabDistance
+(
+    const direction d,
+    const scalar x,
+    const label s
+) const
+{
+    const scalar lo = domain_.min()[d];
+    const scalar L = domain_.max()[d] - lo;
+    const scalar a = lo + L*s/n_[d];
+    const scalar b = lo + L*(s + 1)/n_[d];
+    const auto distance = [&](const scalar y)
+    {
+        return y < a ? a - y : (y > b ? y - b : 0);
+    };
+    if (!periodic_[d])
+    {
+        return distance(x);
+    }
+    // The nearest image of x: x wrapped into the domain, and one period
+    // either side of it
+    const scalar w = x - L*std::floor((x - lo)/L);
+    return min(distance(w), min(distance(w - L), distance(w + L)));
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::boxDecomposition::boxDecomposition
+(
+    const boundBox& domain,
+    const FixedList<bool, 3>& periodic,
+    const labelVector& n
+)
+:
+    domain_(domain),
+    periodic_(periodic),
+    n_(n)
+{
+    for (direction d = 0; d < 3; ++d)
+    {
+        if (n_[d] < 1)
+        {
+            FatalErrorInFunction
+                << "boxes along each direction " << n_ << ": the number"
+                << " along direction " << label(d) << " is " << n_[d]
+                << "; each must be at least 1" << exit(FatalError);
+        }
+        if (!(domain_.max()[d] > domain_.min()[d]))
+        {
+            FatalErrorInFunction
+                << "domain " << domain_ << " has no extent along direction "
+                << label(d) << exit(FatalError);
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::boundBox Foam::boxDecomposition::box(const label r) const
+{
+    const labelVector ijk(r % n_.x(), (r/n_.x()) % n_.y(), r/(n_.x()*n_.y()));
+    point lo, hi;
+    for (direction d = 0; d < 3; ++d)
+    {
+        const scalar L = domain_.max()[d] - domain_.min()[d];
+        lo[d] = domain_.min()[d] + L*ijk[d]/n_[d];
+        hi[d] = domain_.min()[d] + L*(ijk[d] + 1)/n_[d];
+    }
+    return boundBox(lo, hi);
+}
+
+
+Foam::label Foam::boxDecomposition::rankOf(const point& x) const
+{
+    labelVector ijk;
+    for (direction d = 0; d < 3; ++d)
+    {
+        ijk[d] = slab(d, x[d]);
+        if (ijk[d] < 0)
+        {
+            return -1;
+        }
+    }
+    return ijk.x() + n_.x()*(ijk.y() + n_.y()*ijk.z());
+}
+
+
+void Foam::boxDecomposition::ranksWithin
+(
+    const point& x,
+    const scalar reach,
+    DynamicList<label>& ranks
+) const
+{
+    ranks.clear();
+    if (rankOf(x) < 0)
+    {
+        return;
+    }
+    // The slabs within reach along each direction, ascending, with their
+    // distances; of their product (in the ranks' order, x fastest: the
+    // ranks come ascending) the boxes within reach in all
+    FixedList<DynamicList<label>, 3> near;
+    FixedList<DynamicList<scalar>, 3> dist;
+    for (direction d = 0; d < 3; ++d)
+    {
+        for (label s = 0; s < n_[d]; ++s)
+        {
+            const scalar h = slabDistance(d, x[d], s);
+            if (h <= reach)
+            {
+                near[d].append(s);
+                dist[d].append(h);
+            }
+        }
+    }
+    forAll(near[2], c)
+    {
+        forAll(near[1], b)
+        {
+            forAll(near[0], a)
+            {
+                if
+                (
+                    sqr(dist[0][a]) + sqr(dist[1][b]) + sqr(dist[2][c])
+                 <= sqr(reach)
+                )
+                {
+                    ranks.append
+                    (
+                        near[0][a] + n_.x()*(near[1][b] + n_.y()*near[2][c])
+                    );
+                }
+            }
+        }
+    }
+}
+
+
+// ************************************************************************* //

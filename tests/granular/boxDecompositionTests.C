@@ -1,0 +1,186 @@
+/*---------------------------------------------------------------------------*\
+  dlmfdFoam: DLM/FD particle-resolved simulation of particulate flows
+-------------------------------------------------------------------------------
+License
+    This file is part of dlmfdFoam, an extension of OpenFOAM.
+
+    dlmfdFoam is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by the
+    Free Software Foundation, either version 3 of the License, or (at your
+    option) any later version. See <http://www.gnu.org/licenses/>.
+
+Description
+    Tests of Foam::boxDecomposition: the rank of a point and the ranks
+    within reach of it, against a brute force over every box and every
+    periodic image.
+
+\*---------------------------------------------------------------------------*/
+
+#include "boxDecomposition.H"
+#include "Random.H"
+
+#include <gtest/gtest.h>
+#include <string>
+
+using namespace Foam;
+
+namespace
+{
+
+//- Distance from x to box b, the nearest of x's periodic images
+scalar bruteDistance
+(
+    const boundBox& domain,
+    const FixedList<bool, 3>& periodic,
+    const boundBox& b,
+    const point& x
+)
+{
+    const vector L = domain.span();
+    scalar best = GREAT;
+    for (label i = -2; i <= 2; ++i)
+    for (label j = -2; j <= 2; ++j)
+    for (label k = -2; k <= 2; ++k)
+    {
+        const labelVector s(i, j, k);
+        bool allowed = true;
+        point y = x;
+        for (direction d = 0; d < 3; ++d)
+        {
+            allowed = allowed && (periodic[d] || s[d] == 0);
+            y[d] += s[d]*L[d];
+        }
+        if (!allowed)
+        {
+            continue;
+        }
+        best = min(best, mag(y - b.nearest(y)));
+    }
+    return best;
+}
+
+//- A point for a message
+std::string where(const point& x)
+{
+    return
+        std::to_string(x.x()) + ' ' + std::to_string(x.y()) + ' '
+      + std::to_string(x.z());
+}
+
+} // End anonymous namespace
+
+
+TEST(boxDecomposition, ranksWithinReachAreThoseOfTheBruteForce)
+{
+    // Boxes narrower than the reach along y, a periodic x and z, points
+    // near faces, edges and corners and outside the domain along the
+    // periodic directions
+    const boundBox domain(point(-1, 0, 0.5), point(3, 1, 2.5));
+    for (const bool px : {false, true})
+    for (const bool pz : {false, true})
+    {
+        const FixedList<bool, 3> periodic({px, false, pz});
+        const labelVector n(4, 5, 3);
+        const boxDecomposition boxes(domain, periodic, n);
+        ASSERT_EQ(boxes.size(), 60);
+        Random rnd(17);
+        DynamicList<label> ranks;
+        label checked = 0, far = 0;
+        for (label sample = 0; sample < 3000; ++sample)
+        {
+            point x =
+                domain.min()
+              + cmptMultiply(rnd.sample01<vector>(), domain.span());
+            // Outside along the periodic directions, by up to a period
+            if (px && sample % 3 == 0)
+            {
+                x.x() += (sample % 2 ? 1 : -1)*domain.span().x();
+            }
+            if (pz && sample % 5 == 0)
+            {
+                x.z() -= 0.999*domain.span().z();
+            }
+            const scalar reach = 0.05 + 0.6*rnd.sample01<scalar>();
+            const label own = boxes.rankOf(x);
+            ASSERT_GE(own, 0) << where(x);
+            boxes.ranksWithin(x, reach, ranks);
+            EXPECT_TRUE(ranks.found(own)) << where(x);
+            for (label a = 1; a < ranks.size(); ++a)
+            {
+                EXPECT_LT(ranks[a - 1], ranks[a]);
+            }
+            for (label r = 0; r < boxes.size(); ++r)
+            {
+                const scalar d =
+                    bruteDistance(domain, periodic, boxes.box(r), x);
+                // Away from the reach by more than round-off
+                if (mag(d - reach) < 1e-12)
+                {
+                    continue;
+                }
+                EXPECT_EQ(ranks.found(r), d < reach)
+                    << "rank " << r << " at " << d << " from " << where(x)
+                    << ", reach " << reach;
+                ++checked;
+                far += d > 0 && d < reach && r != own
+                    && mag(boxes.box(r).centre() - x) > 0.6;
+            }
+            // The point's own box holds it (its image in the domain)
+            EXPECT_LT
+            (
+                bruteDistance(domain, periodic, boxes.box(own), x), 1e-12
+            );
+        }
+        EXPECT_EQ(checked, 3000*60);
+        // Boxes beyond the face neighbours were met (corners, and the
+        // narrow boxes along y)
+        EXPECT_GT(far, 100);
+    }
+}
+
+
+TEST(boxDecomposition, pointsOnBoxFacesBelongToTheUpperBoxAndTheDomainEndToTheLast)
+{
+    const boundBox domain(point(0, 0, 0), point(4, 2, 1));
+    const boxDecomposition boxes
+    (
+        domain, FixedList<bool, 3>({false, true, false}), labelVector(4, 2, 1)
+    );
+    EXPECT_EQ(boxes.rankOf(point(1, 0.5, 0.5)), 1);
+    EXPECT_EQ(boxes.rankOf(point(0.9999999, 0.5, 0.5)), 0);
+    EXPECT_EQ(boxes.rankOf(point(4, 0.5, 0.5)), 3);
+    EXPECT_EQ(boxes.rankOf(point(0, 0, 0)), 0);
+    EXPECT_EQ(boxes.rankOf(point(0.5, 1, 0.5)), 4);
+    // Periodic in y: y = 2 is y = 0, -0.5 is 1.5
+    EXPECT_EQ(boxes.rankOf(point(0.5, 2, 0.5)), 0);
+    EXPECT_EQ(boxes.rankOf(point(0.5, -0.5, 0.5)), 4);
+    // Outside along x or z, which are not periodic
+    EXPECT_EQ(boxes.rankOf(point(-0.01, 0.5, 0.5)), -1);
+    EXPECT_EQ(boxes.rankOf(point(0.5, 0.5, 1.01)), -1);
+    DynamicList<label> ranks(1, label(7));
+    boxes.ranksWithin(point(4.5, 0.5, 0.5), 1, ranks);
+    EXPECT_TRUE(ranks.empty());
+}
+
+
+TEST(boxDecomposition, noBoxesOrAFlatDomainIsRefused)
+{
+    const FixedList<bool, 3> open({false, false, false});
+    const boundBox domain(point(0, 0, 0), point(1, 1, 1));
+    EXPECT_THROW
+    (
+        boxDecomposition(domain, open, labelVector(2, 0, 1)), Foam::error
+    );
+    EXPECT_THROW
+    (
+        boxDecomposition
+        (
+            boundBox(point(0, 0, 0), point(1, 0, 1)), open,
+            labelVector(1, 1, 1)
+        ),
+        Foam::error
+    );
+}
+
+
+// ************************************************************************* //
