@@ -95,27 +95,6 @@ Foam::IOobject Foam::fictitiousDomain::ghostFieldIO
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::fictitiousDomain::bodyPlaces::bodyPlaces(const UList<body>& bodies)
-:
-    size_(bodies.size())
-{
-    bool inPlace = true;
-    forAll(bodies, b)
-    {
-        inPlace = inPlace && global(bodies, b) == b;
-    }
-    if (inPlace)
-    {
-        return;
-    }
-    place_.resize(2*bodies.size());
-    forAll(bodies, b)
-    {
-        place_.insert(global(bodies, b), b);
-    }
-}
-
-
 Foam::fictitiousDomain::fictitiousDomain
 (
     const fvMesh& mesh,

@@ -40,6 +40,17 @@ Foam::label Foam::boxDecomposition::slab
 }
 
 
+Foam::scalar Foam::boxDecomposition::edge
+(
+    const direction d,
+    const label s
+) const
+{
+    const scalar lo = domain_.min()[d];
+    return lo + (domain_.max()[d] - lo)*s/n_[d];
+}
+
+
 Foam::scalar Foam::boxDecomposition::slabDistance
 (
     const direction d,
@@ -49,8 +60,8 @@ Foam::scalar Foam::boxDecomposition::slabDistance
 {
     const scalar lo = domain_.min()[d];
     const scalar L = domain_.max()[d] - lo;
-    const scalar a = lo + L*s/n_[d];
-    const scalar b = lo + L*(s + 1)/n_[d];
+    const scalar a = edge(d, s);
+    const scalar b = edge(d, s + 1);
     const auto distance = [&](const scalar y)
     {
         return y < a ? a - y : (y > b ? y - b : 0);
@@ -106,9 +117,8 @@ Foam::boundBox Foam::boxDecomposition::box(const label r) const
     point lo, hi;
     for (direction d = 0; d < 3; ++d)
     {
-        const scalar L = domain_.max()[d] - domain_.min()[d];
-        lo[d] = domain_.min()[d] + L*ijk[d]/n_[d];
-        hi[d] = domain_.min()[d] + L*(ijk[d] + 1)/n_[d];
+        lo[d] = edge(d, ijk[d]);
+        hi[d] = edge(d, ijk[d] + 1);
     }
     return boundBox(lo, hi);
 }
