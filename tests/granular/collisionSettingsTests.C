@@ -117,4 +117,30 @@ TEST(collisionSettings, subCyclingIsAllUnlessInReachIsAsked)
 }
 
 
+TEST(collisionSettings, particleDistributionIsMasterUnlessOwnedIsAsked)
+{
+    EXPECT_FALSE
+    (
+        collisionSettings(testInput::parse(box)).ownedDistribution()
+    );
+    EXPECT_TRUE
+    (
+        collisionSettings
+        (
+            testInput::parse("particleDistribution owned; " + box)
+        ).ownedDistribution()
+    );
+    const std::string e = testInput::errorOf([&]
+    {
+        collisionSettings s
+        (
+            testInput::parse("particleDistribution own; " + box)
+        );
+    });
+    EXPECT_NE(e.find("particleDistribution own"), std::string::npos) << e;
+    EXPECT_NE(e.find("master"), std::string::npos) << e;
+    EXPECT_NE(e.find("owned"), std::string::npos) << e;
+}
+
+
 // ************************************************************************* //

@@ -58,7 +58,11 @@ int main(int argc, char *argv[])
     (
         "Dry granular flow: soft-sphere DEM of spheres and convex polyhedra"
     );
-    argList::noParallel();
+
+    // A parallel run (particleDistribution owned) reads and writes the
+    // case itself, and per-rank folders only for the restart's clock:
+    // nothing to decompose beforehand
+    argList::noCheckProcessorDirectories();
 
     #include "setRootCase.H"
     Info<< "Create time\n" << endl;
@@ -83,7 +87,7 @@ int main(int argc, char *argv[])
     (
         wordList({"granular", "output"}), scalarList({g, o})
     ).c_str() << "; " << scene.nSubSteps() << " sub-steps, "
-        << scalar(scene.nSubSteps())*scene.granular().size()/max(g, SMALL)
+        << scalar(scene.nSubSteps())*scene.nParticles()/max(g, SMALL)
         << " particle-steps/s" << nl << nl << "End" << nl << endl;
 
     return 0;

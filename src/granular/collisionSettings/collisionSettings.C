@@ -22,7 +22,8 @@ Foam::collisionSettings::collisionSettings()
     skin_(-1),
     domain_(),
     periodic_(false),
-    subCycleInReach_(false)
+    subCycleInReach_(false),
+    ownedDistribution_(false)
 {}
 
 
@@ -69,6 +70,19 @@ Foam::collisionSettings::collisionSettings(const dictionary& collisionDict)
             << " particle over the step)" << exit(FatalIOError);
     }
     subCycleInReach_ = subCycling == "inReach";
+
+    const word distribution =
+        collisionDict.getOrDefault<word>("particleDistribution", "master");
+    if (distribution != "master" && distribution != "owned")
+    {
+        FatalIOErrorInFunction(collisionDict)
+            << "particleDistribution " << distribution << " is not allowed;"
+            << " valid: 2" << nl << "(" << nl << "master" << nl << "owned"
+            << nl << ")" << nl << "(master: the master rank moves every"
+            << " particle; owned: each rank moves the particles in its"
+            << " region)" << exit(FatalIOError);
+    }
+    ownedDistribution_ = distribution == "owned";
 
     const dictionary& domainDict = collisionDict.subDict("domain");
     knownKeywords::require

@@ -19,17 +19,17 @@ License
 #include "clockTime.H"
 #include "polyMesh.H"
 #include "progressLog.H"
+#include "PstreamReduceOps.H"
 
-// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::granularRun::granularRun(Time& runTime, const sceneEffects& effects)
-:
-    runTime_(runTime),
-    granular_(),
-    granularSeconds_(0),
-    outputSeconds_(0),
-    nSubSteps_(0)
+Foam::autoPtr<Foam::granularSystem> Foam::granularRun::readScene
+(
+    const sceneEffects& effects,
+    const bool log
+) const
 {
+    // (IOdictionary: read from the case itself in a parallel run too)
     const auto constantDict = [&](const word& name)
     {
         return IOdictionary
@@ -37,46 +37,57 @@ Foam::granularRun::granularRun(Time& runTime, const sceneEffects& effects)
             IOobject
             (
                 name,
-                runTime.constant(),
-                runTime,
+                runTime_.constant(),
+                runTime_,
                 IOobject::MUST_READ,
-                IOobject::NO_WRITE
+                IOobject::NO_WRITE,
+                false
             )
         );
     };
-    granular_.reset
+    auto scene = autoPtr<granularSystem>::New
     (
-        new granularSystem
-        (
-            constantDict("particleProperties"),
-            constantDict("collisionProperties"),
-            effects
-        )
+        constantDict("particleProperties"),
+        constantDict("collisionProperties"),
+        effects
     );
-    granularSystem& granular = *granular_;
+    granularSystem& granular = *scene;
 
     // Walls from the planar patches of a mesh, where asked for: the mesh
     // is read for its geometry only
     if (granular.wantsWallPatches())
     {
-        Info<< "Reading the mesh for its wall patches" << nl;
+        if (Pstream::parRun())
+        {
+            FatalErrorInFunction
+                << "constant/collisionProperties: wallPatches takes the"
+                << " walls from the mesh, which a parallel granularFoam"
+                << " does not read; give the walls in walls { }"
+                << exit(FatalError);
+        }
+        if (log)
+        {
+            Info<< "Reading the mesh for its wall patches" << nl;
+        }
         const polyMesh mesh
         (
             IOobject
             (
                 polyMesh::defaultRegion,
-                runTime.timeName(),
-                runTime,
+                runTime_.timeName(),
+                runTime_,
                 IOobject::MUST_READ
             )
         );
         granular.addWallPatches(mesh);
     }
 
-    granular.readGravity(runTime);
-    Info<< "Gravity " << granular.gravity() << " m/s^2" << nl;
+    granular.readGravity(runTime_);
 
-    const fileName particleFile(runTime.timePath()/"particles");
+    const fileName particleFile
+    (
+        runTime_.globalPath()/runTime_.timeName()/"particles"
+    );
     if (!isFile(particleFile))
     {
         FatalErrorInFunction
@@ -85,9 +96,109 @@ Foam::granularRun::granularRun(Time& runTime, const sceneEffects& effects)
             << " 0.orig" << exit(FatalError);
     }
     granular.readParticles(particleFile);
+    return scene;
+}
 
-    Info<< "Particles: " << granular.size() << " from " << particleFile
-        << nl << "Shapes:";
+
+void Foam::granularRun::setOwned(const sceneEffects& effects)
+{
+    labelVector n(1, 1, 1);
+    if (Pstream::parRun())
+    {
+        const IOdictionary decomposeDict
+        (
+            IOobject
+            (
+                "decomposeParDict",
+                runTime_.system(),
+                runTime_,
+                IOobject::MUST_READ,
+                IOobject::NO_WRITE,
+                false
+            )
+        );
+        const label nDomains = decomposeDict.get<label>("numberOfSubdomains");
+        if (nDomains != Pstream::nProcs())
+        {
+            FatalIOErrorInFunction(decomposeDict)
+                << "numberOfSubdomains " << nDomains << " for a run on "
+                << Pstream::nProcs() << " ranks; they must be equal"
+                << exit(FatalIOError);
+        }
+        const word method = decomposeDict.get<word>("method");
+        if (method != "simple")
+        {
+            FatalIOErrorInFunction(decomposeDict)
+                << "particleDistribution owned: method " << method
+                << " is not allowed for granularFoam; valid: simple (the"
+                << " boxes simpleCoeffs n over the collision domain)"
+                << exit(FatalIOError);
+        }
+        n = decomposeDict.subDict("simpleCoeffs").get<labelVector>("n");
+        if (cmptProduct(n) != Pstream::nProcs() || cmptMin(n) < 1)
+        {
+            FatalIOErrorInFunction(decomposeDict)
+                << "particleDistribution owned: simpleCoeffs n " << n
+                << " makes " << cmptProduct(n) << " boxes for "
+                << Pstream::nProcs() << " ranks; each count >= 1 and"
+                << " their product the number of ranks" << exit(FatalIOError);
+        }
+    }
+    const granularSystem& granular = *granular_;
+    boxes_.reset
+    (
+        new boxDecomposition(granular.domain(), granular.periodic(), n)
+    );
+    nParticles_ = granular.size();
+    // (read on every rank: reading the case's dictionaries is collective;
+    // only the master keeps its particles)
+    whole_ = readScene(effects, false);
+    if (!Pstream::master())
+    {
+        whole_.clear();
+    }
+    UPtrList<granularSystem> part(1);
+    part.set(0, granular_.get());
+    owned_.reset(new ownedGranularSteps(std::move(part), *boxes_, exchange_));
+    Info<< "Particle distribution: owned, " << n.x() << " x " << n.y()
+        << " x " << n.z() << " boxes of the domain; each rank moves the"
+        << " particles in its box" << nl;
+}
+
+
+const Foam::granularSystem* Foam::granularRun::sceneToWrite()
+{
+    if (!owned_)
+    {
+        return granular_.get();
+    }
+    owned_->gatherScene(whole_.get());
+    return whole_.get();
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::granularRun::granularRun(Time& runTime, const sceneEffects& effects)
+:
+    runTime_(runTime),
+    granular_(),
+    boxes_(),
+    exchange_(),
+    owned_(),
+    whole_(),
+    granularSeconds_(0),
+    outputSeconds_(0),
+    nSubSteps_(0),
+    nParticles_(0)
+{
+    granular_ = readScene(effects, true);
+    granularSystem& granular = *granular_;
+    nParticles_ = granular.size();
+    Info<< "Gravity " << granular.gravity() << " m/s^2" << nl;
+    Info<< "Particles: " << granular.size() << " from "
+        << runTime_.globalPath()/runTime_.timeName()/"particles" << nl
+        << "Shapes:";
     for (const particleShape& s : granular.shapes())
     {
         Info<< ' ' << s.name() << " (" << s.type() << ", D = "
@@ -103,6 +214,18 @@ Foam::granularRun::granularRun(Time& runTime, const sceneEffects& effects)
         << "Granular sub-step T_c/N = " << granular.maxSubStep() << " s,"
         << " skin " << granular.skin() << " m" << nl;
     granular.effects().report(Info);
+    if (granular.ownedDistribution())
+    {
+        setOwned(effects);
+    }
+    else if (Pstream::parRun())
+    {
+        FatalErrorInFunction
+            << "granularFoam runs in parallel with particleDistribution"
+            << " owned (constant/collisionProperties) only; with master the"
+            << " master would move every particle while the other ranks"
+            << " wait" << exit(FatalError);
+    }
     Info<< endl;
 }
 
@@ -113,20 +236,28 @@ void Foam::granularRun::run()
 {
     granularSystem& granular = *granular_;
 
-    granularVTKWriter vtk(runTime_.path()/"VTK", runTime_.value());
-    if (runTime_.timeIndex() == 0 || !isDir(runTime_.path()/"VTK"))
+    // Written by the master (owned mode: the whole scene gathered there)
+    granularVTKWriter vtk(runTime_.globalPath()/"VTK", runTime_.value());
+    const bool firstWrite =
+        runTime_.timeIndex() == 0 || !isDir(runTime_.globalPath()/"VTK");
+    if (const granularSystem* scene = firstWrite ? sceneToWrite() : nullptr)
     {
-        vtk.write(granular, runTime_.value(), runTime_.timeIndex());
+        vtk.write(*scene, runTime_.value(), runTime_.timeIndex());
     }
 
-    const fileName datDir
-    (
-        runTime_.path()/"postProcessing"/"granular"/runTime_.timeName()
-    );
-    mkDir(datDir);
-    OFstream dat(datDir/"granular.dat");
-    dat << "# time kineticEnergy[J] nSubSteps contacts wallContacts"
-        << " maxOverlapRatio listBuilds cpuTime[s]" << nl;
+    autoPtr<OFstream> dat;
+    if (Pstream::master())
+    {
+        const fileName datDir
+        (
+            runTime_.globalPath()/"postProcessing"/"granular"
+           /runTime_.timeName()
+        );
+        mkDir(datDir);
+        dat.reset(new OFstream(datDir/"granular.dat"));
+        dat() << "# time kineticEnergy[J] nSubSteps contacts wallContacts"
+            << " maxOverlapRatio listBuilds cpuTime[s]" << nl;
+    }
 
     clockTime clock;
     progressLog progress(runTime_);
@@ -135,23 +266,47 @@ void Foam::granularRun::run()
         ++runTime_;
 
         clock.timeIncrement();
-        const label nSub = granular.evolve(runTime_.deltaTValue());
+        const label nSub =
+            owned_
+          ? owned_->evolve(runTime_.deltaTValue())
+          : granular.evolve(runTime_.deltaTValue());
         granularSeconds_ += clock.timeIncrement();
         granular.checkHealth(runTime_.value());
         nSubSteps_ += nSub;
 
-        const granularSystem::statistics& s = granular.stats();
-        dat << runTime_.value() << ' ' << s.kineticEnergy << ' '
-            << nSub << ' ' << s.nContacts << ' ' << s.nWallContacts << ' '
-            << s.maxOverlapRatio << ' ' << s.nListBuilds << ' '
-            << runTime_.elapsedCpuTime() << nl;
+        // The counters of the step over the ranks (owned mode: the
+        // kinetic energy summed rank by rank, the list builds of every
+        // rank)
+        granularSystem::statistics s = granular.stats();
+        if (owned_)
+        {
+            s.kineticEnergy = returnReduce(s.kineticEnergy, sumOp<scalar>());
+            s.nContacts = owned_->nContacts();
+            s.nWallContacts = returnReduce(s.nWallContacts, sumOp<label>());
+            s.maxOverlapRatio =
+                returnReduce(s.maxOverlapRatio, maxOp<scalar>());
+            s.nListBuilds = returnReduce(s.nListBuilds, sumOp<label>());
+        }
+        if (dat)
+        {
+            dat() << runTime_.value() << ' ' << s.kineticEnergy << ' '
+                << nSub << ' ' << s.nContacts << ' ' << s.nWallContacts
+                << ' ' << s.maxOverlapRatio << ' ' << s.nListBuilds << ' '
+                << runTime_.elapsedCpuTime() << nl;
+        }
 
         if (runTime_.writeTime())
         {
             clock.timeIncrement();
             runTime_.write();
-            granular.writeParticles(runTime_.timePath());
-            vtk.write(granular, runTime_.value(), runTime_.timeIndex());
+            if (const granularSystem* scene = sceneToWrite())
+            {
+                scene->writeParticles
+                (
+                    runTime_.globalPath()/runTime_.timeName()
+                );
+                vtk.write(*scene, runTime_.value(), runTime_.timeIndex());
+            }
             outputSeconds_ += clock.timeIncrement();
 
             Info<< "Time = " << runTime_.timeName()

@@ -43,7 +43,7 @@ void Foam::granularSystem::buildLaws()
 }
 
 
-void Foam::granularSystem::updateParticleData()
+void Foam::granularSystem::updateParticleData(const bool keepHistory)
 {
     const label n = size();
     radius_.setSize(n);
@@ -57,7 +57,8 @@ void Foam::granularSystem::updateParticleData()
     for (label i = 0; i < n; ++i)
     {
         rigidParticle& p = particles_[i];
-        if (p.motion() != motionKind::fixed)
+        // A ghost moves with its owner, not here
+        if (p.motion() != motionKind::fixed && !ghost_[i])
         {
             moving.append(i);
         }
@@ -76,7 +77,8 @@ void Foam::granularSystem::updateParticleData()
         p.setRotation(rotationOn_);
     }
     integrator_.setParticles(std::move(moving), n);
-    if (n)
+    // (owned mode: the effects were settled on the whole scene)
+    if (n && !partOfScene_)
     {
         if
         (
@@ -99,7 +101,6 @@ void Foam::granularSystem::updateParticleData()
         }
     }
 
-    scalar rMax = 0, Dmin = GREAT;
     for (label i = 0; i < size(); ++i)
     {
         const particleShape& shape = particles_[i].shape();
@@ -107,16 +108,15 @@ void Foam::granularSystem::updateParticleData()
         const auto* s = isA<particleShapes::sphere>(shape);
         sphereRadius_[i] = s ? s->radius() : -1;
         radius_[i] = particles_[i].shape().boundingRadius();
-        rMax = max(rMax, radius_[i]);
-        Dmin = min(Dmin, particles_[i].shape().equivalentDiameter());
     }
+    // The sizes of the scene: of the particles held, or of the whole
+    // scene when this is a part of it (owned mode: every rank takes the
+    // same sub-step and searches with the same cells)
+    const sceneConstants scene = partOfScene_ ? scene_ : localConstants();
+    const scalar rMax = scene.rMax, Dmin = scene.Dmin;
     // Shortest contact of the scene: each pair of materials at the
     // smallest reduced mass among the particles present
-    scalarList mMin(materials_.nParticleMaterials(), GREAT);
-    for (label i = 0; i < size(); ++i)
-    {
-        mMin[materialOf_[i]] = min(mMin[materialOf_[i]], particles_[i].mass());
-    }
+    const scalarList& mMin = scene.minMass;
     scalar Tc = VGREAT;
     if (contactsOn_)
     {
@@ -146,8 +146,81 @@ void Foam::granularSystem::updateParticleData()
     }
     dtMax_ = Tc < VGREAT ? Tc/settings_.subStepsPerContact() : VGREAT;
 
-    search_.reset(settings_.domain(), settings_.periodic(), n, rMax, Dmin);
-    history_.clear();
+    search_.reset
+    (
+        settings_.domain(), settings_.periodic(), scene.n, rMax, Dmin
+    );
+    if (!keepHistory)
+    {
+        history_.clear();
+    }
+}
+
+
+Foam::granularSystem::sceneConstants
+Foam::granularSystem::localConstants() const
+{
+    sceneConstants c;
+    c.n = size();
+    c.minMass.setSize(materials_.nParticleMaterials(), GREAT);
+    for (label i = 0; i < size(); ++i)
+    {
+        const particleShape& shape = particles_[i].shape();
+        c.rMax = max(c.rMax, shape.boundingRadius());
+        c.Dmin = min(c.Dmin, shape.equivalentDiameter());
+        c.minMass[materialOf_[i]] =
+            min(c.minMass[materialOf_[i]], particles_[i].mass());
+    }
+    return c;
+}
+
+
+void Foam::granularSystem::openSubStep
+(
+    const scalar dt,
+    const bool finishPrevious
+)
+{
+    // The previous sub-step's second half kick, the first half kick and
+    // drift, the start of the force sum, and whether the Verlet list must
+    // be rebuilt (Foam::velocityVerletIntegrator)
+    integrator_.openSubStep
+    (
+        particles_,
+        dt,
+        finishPrevious,
+        contactsOn_ && search_.built(size()) ? &search_ : nullptr
+    );
+}
+
+
+void Foam::granularSystem::contactForces(const scalar dt)
+{
+    updateCandidates();
+    if (walls_.size())
+    {
+        for (label i = 0; i < size(); ++i)
+        {
+            // (subCycling inReach: no contact work out of reach; a ghost
+            // meets the walls on its owner's rank)
+            if
+            (
+                search_.nearAWall(i)
+             && !(outOfReach_.size() && outOfReach_[i])
+             && owns(i)
+            )
+            {
+                addWallForces(i, dt);
+            }
+        }
+    }
+    addPairForces(dt);
+}
+
+
+void Foam::granularSystem::closeStep(const scalar dt)
+{
+    stats_.kineticEnergy = integrator_.closeStep(particles_, dt);
 }
 
 
@@ -159,46 +232,32 @@ void Foam::granularSystem::subStep
     const bool contacts
 )
 {
-    // (1) The previous sub-step's second half kick, the first half kick
-    // and drift, the start of the force sum, and whether the Verlet list
-    // must be rebuilt (Foam::velocityVerletIntegrator)
-    integrator_.openSubStep
-    (
-        particles_,
-        dt,
-        finishPrevious,
-        contactsOn_ && search_.built(size()) ? &search_ : nullptr
-    );
+    // (1) The first pass: kicks, drift, the start of the force sum
+    openSubStep(dt, finishPrevious);
 
     // (2) Contacts: walls, then pairs
     if (contacts)
     {
-        updateCandidates();
-        if (walls_.size())
-        {
-            for (label i = 0; i < size(); ++i)
-            {
-                // (subCycling inReach: no contact work out of reach)
-                if
-                (
-                    search_.nearAWall(i)
-                 && !(outOfReach_.size() && outOfReach_[i])
-                )
-                {
-                    addWallForces(i, dt);
-                }
-            }
-        }
-        addPairForces(dt);
+        contactForces(dt);
     }
 
     // (3) On the last sub-step of evolve: its second half kick, and the
     // kinetic energy (otherwise the kick opens the next sub-step's pass)
-    if (!last)
+    if (last)
     {
-        return;
+        closeStep(dt);
     }
-    stats_.kineticEnergy = integrator_.closeStep(particles_, dt);
+}
+
+
+void Foam::granularSystem::resetStatistics(const bool keepFallbacks)
+{
+    const label fallbacks = stats_.nFallbacks;
+    stats_ = statistics();
+    if (keepFallbacks)
+    {
+        stats_.nFallbacks = fallbacks;
+    }
 }
 
 
@@ -233,6 +292,7 @@ Foam::granularSystem::granularSystem
     collisionMode_(sceneEffects::collisionMode::on),
     contactsOn_(true),
     rotationOn_(effects_.settle("rotation", true, "default")),
+    partOfScene_(false),
     dtMax_(VGREAT),
     search_(),
     integrator_(settings_)
@@ -370,6 +430,7 @@ Foam::label Foam::granularSystem::addParticle
     );
     ids_.append(id);
     globalIndex_.append(i);
+    ghost_.append(false);
     shapeOf_.append(shapei);
     materialOf_.append(materiali);
     return i;
@@ -381,6 +442,7 @@ void Foam::granularSystem::clearParticles()
     particles_.clear();
     ids_.clear();
     globalIndex_.clear();
+    ghost_.clear();
     shapeOf_.clear();
     materialOf_.clear();
     updateParticleData();
@@ -417,7 +479,7 @@ Foam::vector Foam::granularSystem::momentum() const
 
 Foam::label Foam::granularSystem::evolve(const scalar Deltat)
 {
-    stats_ = statistics();
+    resetStatistics(false);
 
     if (integrator_.moving().empty())
     {

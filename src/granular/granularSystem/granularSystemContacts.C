@@ -152,6 +152,12 @@ void Foam::granularSystem::addPairForces(const scalar dt)
         {
             continue;
         }
+        // Owned mode: a pair of two ghosts is computed on their owners'
+        // ranks
+        if (ghost_[i] && ghost_[j])
+        {
+            continue;
+        }
         // subCycling inReach: a particle out of reach has no contact over
         // the step
         if (outOfReach_.size() && (outOfReach_[i] || outOfReach_[j]))
@@ -170,8 +176,12 @@ void Foam::granularSystem::addPairForces(const scalar dt)
             xjImage - pj.position(), dt, history_, globalIndex_[i],
             globalIndex_[j]
         );
-        ++stats_.nContacts;
-        noteOverlap(i, j, c.overlap/min(Deq_[i], Deq_[j]));
+        // (counted once over the ranks: by the owner of the first)
+        if (owns(i))
+        {
+            ++stats_.nContacts;
+            noteOverlap(i, j, c.overlap/min(Deq_[i], Deq_[j]));
+        }
     }
 
     // Contacts that ended lose their history

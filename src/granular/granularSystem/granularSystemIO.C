@@ -76,7 +76,8 @@ void Foam::granularSystem::readCollision(const dictionary& collisionDict)
         wordList
         ({
             "contactLaw", "subStepsPerContact", "subCycling",
-            "overlapLimit", "skin", "domain", "walls", "wallPatches", "pairs"
+            "particleDistribution", "overlapLimit", "skin", "domain",
+            "walls", "wallPatches", "pairs"
         })
     );
 
@@ -217,6 +218,7 @@ void Foam::granularSystem::readParticles
     particles_.clear();
     ids_.clear();
     globalIndex_.clear();
+    ghost_.clear();
     shapeOf_.clear();
     materialOf_.clear();
 

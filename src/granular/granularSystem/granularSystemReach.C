@@ -48,8 +48,12 @@ bool Foam::granularSystem::contactsPossible(const scalar Deltat)
 {
     // How far each particle can get over the step, from its speed and its
     // acceleration (weight and external force held over the step)
-    const scalar maxReach = stepReach(Deltat);
+    return contactsWithin(stepReach(Deltat));
+}
 
+
+bool Foam::granularSystem::contactsWithin(const scalar maxReach)
+{
     // A wall a particle can reach
     for (const label i : integrator_.moving())
     {
@@ -91,6 +95,47 @@ bool Foam::granularSystem::evolveInReach(const scalar Deltat, const label n)
     // bound decides the cost, never the result
     const scalar allowed = max(3*stepReach(Deltat), 0.1*search_.skin());
 
+    const label nInReach = markInReach(allowed);
+    if (nInReach < 0)
+    {
+        return false;
+    }
+    if (nInReach == integrator_.moving().size())
+    {
+        // Every particle in reach: the whole scene's contact work, as with
+        // subCycling all
+        clearInReach();
+        return false;
+    }
+
+    // The start of the step, to redo it if a particle in reach travels
+    // farther than allowed
+    keepStart();
+
+    // Every moving particle takes the sub-steps (the same arithmetic as
+    // subCycling all: the particles out of reach move by the same bits),
+    // the contact work is done for the particles in reach only
+    const scalar dt = Deltat/n;
+    for (label k = 0; k < n; ++k)
+    {
+        subStep(dt, k > 0, k == n - 1, true);
+        if (travelledFarther(allowed, true))
+        {
+            restoreStart();
+            clearInReach();
+            resetStatistics(true);
+            noteFallback();
+            return false;
+        }
+    }
+    clearInReach();
+    stats_.nInReach = nInReach;
+    return true;
+}
+
+
+Foam::label Foam::granularSystem::markInReach(const scalar allowed)
+{
     // Out of reach: no wall within the allowed travel, and no particle
     // within twice it (both may close in)
     const pointField& x = positions();
@@ -98,7 +143,7 @@ bool Foam::granularSystem::evolveInReach(const scalar Deltat, const label n)
         search_.pairsWithin(x, radius_, 2*allowed);
     if (!near)
     {
-        return false;
+        return -1;
     }
     outOfReach_.setSize(size());
     outOfReach_ = false;
@@ -146,64 +191,63 @@ bool Foam::granularSystem::evolveInReach(const scalar Deltat, const label n)
             inReach_.append(i);
         }
     }
-    if (inReach_.size() == integrator_.moving().size())
-    {
-        // Every particle in reach: the whole scene's contact work, as with
-        // subCycling all
-        outOfReach_.clear();
-        return false;
-    }
+    return inReach_.size();
+}
 
-    // The start of the step, to redo it if a particle in reach travels
-    // farther than allowed
+
+void Foam::granularSystem::keepStart()
+{
     atStart_.clear();
     for (const label i : integrator_.moving())
     {
         atStart_.push_back(particles_[i]);
     }
     historyAtStart_ = history_;
+}
 
-    // Every moving particle takes the sub-steps (the same arithmetic as
-    // subCycling all: the particles out of reach move by the same bits),
-    // the contact work is done for the particles in reach only
-    const scalar dt = Deltat/n;
-    for (label k = 0; k < n; ++k)
+
+bool Foam::granularSystem::travelledFarther
+(
+    const scalar allowed,
+    const bool inReachOnly
+) const
+{
+    const labelList& moving = integrator_.moving();
+    forAll(moving, m)
     {
-        subStep(dt, k > 0, k == n - 1, true);
-        bool tooFar = false;
-        const labelList& moving = integrator_.moving();
-        for (label m = 0; m < moving.size() && !tooFar; ++m)
+        const label i = moving[m];
+        if (inReachOnly && outOfReach_[i])
         {
-            const label i = moving[m];
-            tooFar =
-                !outOfReach_[i]
-             && magSqr
-                (
-                    search_.separation
-                    (
-                        atStart_[m].position(), particles_[i].position()
-                    )
-                ) > sqr(allowed);
+            continue;
         }
-        if (tooFar)
+        if
+        (
+            magSqr
+            (
+                search_.separation
+                (
+                    atStart_[m].position(), particles_[i].position()
+                )
+            ) > sqr(allowed)
+        )
         {
-            forAll(moving, m)
-            {
-                const label i = moving[m];
-                particles_[i] = atStart_[m];
-                search_.noteMoved(i, particles_[i].position());
-            }
-            history_ = historyAtStart_;
-            outOfReach_.clear();
-            const label fallbacks = stats_.nFallbacks + 1;
-            stats_ = statistics();
-            stats_.nFallbacks = fallbacks;
-            return false;
+            return true;
         }
     }
-    outOfReach_.clear();
-    stats_.nInReach = inReach_.size();
-    return true;
+    return false;
+}
+
+
+void Foam::granularSystem::restoreStart()
+{
+    const labelList& moving = integrator_.moving();
+    forAll(moving, m)
+    {
+        const label i = moving[m];
+        particles_[i] = atStart_[m];
+        search_.noteMoved(i, particles_[i].position());
+    }
+    history_ = historyAtStart_;
 }
 
 

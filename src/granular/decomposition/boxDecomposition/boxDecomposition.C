@@ -77,6 +77,60 @@ Foam::scalar Foam::boxDecomposition::slabDistance
 }
 
 
+Foam::scalar Foam::boxDecomposition::slabGap
+(
+    const direction d,
+    const label s,
+    const label t
+) const
+{
+    const scalar a0 = edge(d, s), a1 = edge(d, s + 1);
+    const scalar b0 = edge(d, t), b1 = edge(d, t + 1);
+    const auto gap = [&](const scalar shift)
+    {
+        return max(scalar(0), max(b0 + shift - a1, a0 - b1 - shift));
+    };
+    if (!periodic_[d])
+    {
+        return gap(0);
+    }
+    const scalar L = domain_.max()[d] - domain_.min()[d];
+    return min(gap(0), min(gap(-L), gap(L)));
+}
+
+
+void Foam::boxDecomposition::ranksOf
+(
+    const FixedList<DynamicList<label>, 3>& near,
+    const FixedList<DynamicList<scalar>, 3>& dist,
+    const scalar reach,
+    DynamicList<label>& ranks
+) const
+{
+    // In the ranks' order (x fastest): the ranks come ascending
+    forAll(near[2], c)
+    {
+        forAll(near[1], b)
+        {
+            forAll(near[0], a)
+            {
+                if
+                (
+                    sqr(dist[0][a]) + sqr(dist[1][b]) + sqr(dist[2][c])
+                 <= sqr(reach)
+                )
+                {
+                    ranks.append
+                    (
+                        near[0][a] + n_.x()*(near[1][b] + n_.y()*near[2][c])
+                    );
+                }
+            }
+        }
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::boxDecomposition::boxDecomposition
@@ -168,26 +222,44 @@ void Foam::boxDecomposition::ranksWithin
             }
         }
     }
-    forAll(near[2], c)
+    ranksOf(near, dist, reach, ranks);
+}
+
+
+void Foam::boxDecomposition::neighbours
+(
+    const label r,
+    const scalar reach,
+    DynamicList<label>& ranks
+) const
+{
+    ranks.clear();
+    const labelVector ijk(r % n_.x(), (r/n_.x()) % n_.y(), r/(n_.x()*n_.y()));
+    FixedList<DynamicList<label>, 3> near;
+    FixedList<DynamicList<scalar>, 3> dist;
+    for (direction d = 0; d < 3; ++d)
     {
-        forAll(near[1], b)
+        for (label s = 0; s < n_[d]; ++s)
         {
-            forAll(near[0], a)
+            const scalar h = slabGap(d, ijk[d], s);
+            if (h <= reach)
             {
-                if
-                (
-                    sqr(dist[0][a]) + sqr(dist[1][b]) + sqr(dist[2][c])
-                 <= sqr(reach)
-                )
-                {
-                    ranks.append
-                    (
-                        near[0][a] + n_.x()*(near[1][b] + n_.y()*near[2][c])
-                    );
-                }
+                near[d].append(s);
+                dist[d].append(h);
             }
         }
     }
+    ranksOf(near, dist, reach, ranks);
+    // Not r itself
+    label k = 0;
+    forAll(ranks, m)
+    {
+        if (ranks[m] != r)
+        {
+            ranks[k++] = ranks[m];
+        }
+    }
+    ranks.resize(k);
 }
 
 

@@ -1,0 +1,154 @@
+/*---------------------------------------------------------------------------*\
+  dlmfdFoam: DLM/FD particle-resolved simulation of particulate flows
+-------------------------------------------------------------------------------
+License
+    This file is part of dlmfdFoam, an extension of OpenFOAM.
+
+    dlmfdFoam is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by the
+    Free Software Foundation, either version 3 of the License, or (at your
+    option) any later version. See <http://www.gnu.org/licenses/>.
+
+\*---------------------------------------------------------------------------*/
+
+#include "pstreamRankExchange.H"
+#include "Pstream.H"
+#include "PstreamReduceOps.H"
+#include "UIPstream.H"
+#include "UOPstream.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::pstreamRankExchange::pstreamRankExchange()
+:
+    ranks_(1, Pstream::myProcNo())
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::pstreamRankExchange::nRanks() const
+{
+    return Pstream::nProcs();
+}
+
+
+void Foam::pstreamRankExchange::exchange(UList<messages>& perRank) const
+{
+    if (perRank.size() != 1)
+    {
+        FatalErrorInFunction
+            << perRank.size() << " ranks' messages in one process"
+            << abort(FatalError);
+    }
+    messages& m = perRank[0];
+    const label n = m.ranks.size();
+    if (!Pstream::parRun() || !n)
+    {
+        return;
+    }
+    const int tag = UPstream::msgType();
+    const auto comms = UPstream::commsTypes::nonBlocking;
+
+    // The sizes, then the messages (a rank hears only from its
+    // neighbours, which name it among theirs)
+    labelList sizeOut(n), sizeIn(n, 0);
+    label start = UPstream::nRequests();
+    forAll(m.ranks, k)
+    {
+        UIPstream::read
+        (
+            comms, m.ranks[k], reinterpret_cast<char*>(&sizeIn[k]),
+            sizeof(label), tag
+        );
+    }
+    forAll(m.ranks, k)
+    {
+        sizeOut[k] = m.out[k].size();
+        UOPstream::write
+        (
+            comms, m.ranks[k], reinterpret_cast<const char*>(&sizeOut[k]),
+            sizeof(label), tag
+        );
+    }
+    UPstream::waitRequests(start);
+
+    start = UPstream::nRequests();
+    forAll(m.ranks, k)
+    {
+        m.in[k].setSize(sizeIn[k]);
+        if (sizeIn[k])
+        {
+            UIPstream::read
+            (
+                comms, m.ranks[k], m.in[k].data(), sizeIn[k], tag
+            );
+        }
+    }
+    forAll(m.ranks, k)
+    {
+        if (sizeOut[k])
+        {
+            UOPstream::write
+            (
+                comms, m.ranks[k], m.out[k].cdata(), sizeOut[k], tag
+            );
+        }
+    }
+    UPstream::waitRequests(start);
+}
+
+
+Foam::List<Foam::List<char>> Foam::pstreamRankExchange::gather
+(
+    const UList<DynamicList<char>>& perRank
+) const
+{
+    List<List<char>> all(Pstream::nProcs());
+    all[Pstream::myProcNo()] = perRank[0];
+    Pstream::gatherList(all);
+    if (!Pstream::master())
+    {
+        all.clear();
+    }
+    return all;
+}
+
+
+bool Foam::pstreamRankExchange::anyOf(const UList<bool>& perRank) const
+{
+    bool any = false;
+    for (const bool b : perRank)
+    {
+        any = any || b;
+    }
+    return returnReduce(any, orOp<bool>());
+}
+
+
+Foam::scalar Foam::pstreamRankExchange::maxOf
+(
+    const UList<scalar>& perRank
+) const
+{
+    scalar m = -VGREAT;
+    for (const scalar s : perRank)
+    {
+        m = max(m, s);
+    }
+    return returnReduce(m, maxOp<scalar>());
+}
+
+
+Foam::label Foam::pstreamRankExchange::sumOf(const labelUList& perRank) const
+{
+    label n = 0;
+    for (const label v : perRank)
+    {
+        n += v;
+    }
+    return returnReduce(n, sumOp<label>());
+}
+
+
+// ************************************************************************* //
