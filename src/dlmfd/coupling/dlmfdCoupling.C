@@ -138,7 +138,7 @@ void Foam::dlmfdCoupling::setPeriodicity()
 }
 
 
-Foam::fileName Foam::dlmfdCoupling::readParticles()
+Foam::fileName Foam::dlmfdCoupling::readParticles(granularSystem& into)
 {
     // Written by the solver (processor0's in parallel), else the case's
     // own, by hand or by placeParticles
@@ -164,8 +164,64 @@ Foam::fileName Foam::dlmfdCoupling::readParticles()
     }
     Pstream::scatter(file);
     Pstream::scatter(dict);
-    granular_.readParticles(dict, file);
+    into.readParticles(dict, file);
     return file;
+}
+
+
+void Foam::dlmfdCoupling::setOwned(const sceneEffects& effects)
+{
+    // The boxes: the factors of the number of ranks that cut the domain
+    // with the least area between boxes (one box along a direction that
+    // is one cell deep: a 2D case)
+    const label P = Pstream::nProcs();
+    const vector L = granular_.domain().span();
+    labelVector n(P, 1, 1);
+    scalar least = VGREAT;
+    for (label nx = 1; nx <= P; ++nx)
+    {
+        for (label ny = 1; nx*ny <= P; ++ny)
+        {
+            if (P % (nx*ny))
+            {
+                continue;
+            }
+            const label nz = P/(nx*ny);
+            const scalar area =
+                (nx - 1)*L.y()*L.z() + (ny - 1)*L.x()*L.z()
+              + (nz - 1)*L.x()*L.y();
+            if (area < least)
+            {
+                least = area;
+                n = labelVector(nx, ny, nz);
+            }
+        }
+    }
+    boxes_.reset
+    (
+        new boxDecomposition(granular_.domain(), granular_.periodic(), n)
+    );
+
+    // This rank's part: the scene read again, then kept to its box
+    part_.reset
+    (
+        new granularSystem
+        (
+            IOdictionary(constantDict(mesh_, "particleProperties")),
+            IOdictionary(constantDict(mesh_, "collisionProperties")),
+            effects
+        )
+    );
+    part_->addWallPatches(mesh_);
+    part_->readGravity(mesh_);
+    part_->setGravity(Zero);
+    readParticles(part_());
+    UPtrList<granularSystem> parts(1);
+    parts.set(0, part_.get());
+    owned_.reset(new ownedGranularSteps(std::move(parts), *boxes_, exchange_));
+    Info<< "Particle distribution: owned, " << n.x() << " x " << n.y()
+        << " x " << n.z() << " boxes of the collision domain; each rank"
+        << " moves the particles in its box" << nl;
 }
 
 
@@ -280,6 +336,10 @@ Foam::dlmfdCoupling::dlmfdCoupling
         IOdictionary(constantDict(mesh, "collisionProperties")),
         effects
     ),
+    part_(),
+    boxes_(),
+    exchange_(),
+    owned_(),
     fd_
     (
         mesh,
@@ -366,8 +426,12 @@ Foam::dlmfdCoupling::dlmfdCoupling
     // Periodic directions, as the mesh's cyclics and the domain say
     setPeriodicity();
 
-    const fileName particleFile(readParticles());
+    const fileName particleFile(readParticles(granular_));
     checkPlanarParticles(particleFile);
+    if (granular_.ownedDistribution())
+    {
+        setOwned(effects);
+    }
 
     // The multipliers' force density (and the ghost cells' deviations)
     // belong with the particles the solver wrote at this time: with
@@ -484,6 +548,12 @@ void Foam::dlmfdCoupling::write()
     if (!runTime.writeTime())
     {
         return;
+    }
+    if (owned_)
+    {
+        // The contact histories from their owners (the states are the
+        // mirror's already)
+        owned_->gatherScene(Pstream::master() ? &granular_ : nullptr);
     }
     if (Pstream::master())
     {

@@ -305,6 +305,38 @@ void Foam::dlmfdCoupling::correct(volVectorField& U)
 }
 
 
+Foam::label Foam::dlmfdCoupling::evolveOwned
+(
+    const List<fictitiousDomain::body>& bodies,
+    List<vector>& V3,
+    List<vector>& omega3
+)
+{
+    // The new velocities from the master, each set on its owner's part by
+    // the same calls the master makes in the master-side step
+    Pstream::scatter(V3);
+    Pstream::scatter(omega3);
+    granularSystem& part = *part_;
+    for (label i = 0; i < part.size(); ++i)
+    {
+        const label g = part.globalIndex(i);
+        if (bodies[g].free)
+        {
+            rigidParticle& p = part.particle(i);
+            p.setVelocity(V3[g]);
+            p.setOmega(omega3[g]);
+        }
+    }
+    const label nSub = owned_->evolve(mesh_.time().deltaTValue());
+    part.checkHealth(mesh_.time().value());
+
+    // Every rank's mirror of the scene: the fictitious domain and the
+    // output still need every particle
+    owned_->mirrorScene(granular_);
+    return nSub;
+}
+
+
 void Foam::dlmfdCoupling::evolve(volVectorField& U)
 {
     const scalar dt = mesh_.time().deltaTValue();
@@ -376,6 +408,7 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
     scalar maxError = 0;
     const bool corrected = correctedIndex_ == mesh_.time().timeIndex();
     scalar lastChange = 0;
+    List<vector> V3s, omega3s;
     if (Pstream::master())
     {
         for (label i = 0; i < n; ++i)
@@ -400,21 +433,40 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
                 rhoFluid_
                *((volumeInertia(i) & (omega3 - omega0[i]))/dt - r.sumMoment);
 
-            if (b.free)
+            if (owned_)
+            {
+                // (their owners take them: evolveOwned)
+                V3s.setSize(n);
+                omega3s.setSize(n);
+                V3s[i] = V3;
+                omega3s[i] = omega3;
+            }
+            else if (b.free)
             {
                 rigidParticle& p = granular_.particle(i);
                 p.setVelocity(V3);
                 p.setOmega(omega3);
             }
         }
-        nSub = granular_.evolve(dt);
-        granular_.checkHealth(mesh_.time().value());
+        if (!owned_)
+        {
+            nSub = granular_.evolve(dt);
+            granular_.checkHealth(mesh_.time().value());
+        }
     }
-    granularSeconds_ += clock.timeIncrement();
+    if (owned_)
+    {
+        nSub = evolveOwned(bodies, V3s, omega3s);
+        granularSeconds_ += clock.timeIncrement();
+    }
+    else
+    {
+        granularSeconds_ += clock.timeIncrement();
 
-    // The new state to every rank
-    broadcastState();
-    commSeconds_ += clock.timeIncrement();
+        // The new state to every rank
+        broadcastState();
+        commSeconds_ += clock.timeIncrement();
+    }
 
     // The fluid carried by each free particle moves with it: its interior
     // cells, at their centres relative to the body at X*, which moved by
@@ -443,7 +495,8 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
     U.correctBoundaryConditions();
     fdSeconds_ += clock.timeIncrement();
 
-    const granularSystem::statistics& s = granular_.stats();
+    const granularSystem::statistics s =
+        owned_ ? owned_->stats() : granular_.stats();
     Info<< "DLM/FD: " << n << " particles, " << nPoints << " points";
     if (fd_.treatment() == fictitiousDomain::surfaceTreatment::ghostCells)
     {

@@ -277,16 +277,8 @@ void Foam::granularRun::run()
         // The counters of the step over the ranks (owned mode: the
         // kinetic energy summed rank by rank, the list builds of every
         // rank)
-        granularSystem::statistics s = granular.stats();
-        if (owned_)
-        {
-            s.kineticEnergy = returnReduce(s.kineticEnergy, sumOp<scalar>());
-            s.nContacts = owned_->nContacts();
-            s.nWallContacts = returnReduce(s.nWallContacts, sumOp<label>());
-            s.maxOverlapRatio =
-                returnReduce(s.maxOverlapRatio, maxOp<scalar>());
-            s.nListBuilds = returnReduce(s.nListBuilds, sumOp<label>());
-        }
+        const granularSystem::statistics s =
+            owned_ ? owned_->stats() : granular.stats();
         if (dat)
         {
             dat() << runTime_.value() << ' ' << s.kineticEnergy << ' '

@@ -790,39 +790,45 @@ Foam::ownedGranularSteps::ownedRecords() const
 }
 
 
-void Foam::ownedGranularSteps::gatherScene(granularSystem* wholePtr) const
+Foam::List<Foam::DynamicList<char>> Foam::ownedGranularSteps::packOwned
+(
+    const bool withHistory
+) const
 {
-    using record = granularSystem::particleRecord;
-
     List<DynamicList<char>> parts(systems_.size());
     forAll(systems_, k)
     {
         const granularSystem& s = systems_[k];
         DynamicList<char>& buf = parts[k];
         labelHashSet owned;
-        label nOwned = 0;
         for (label i = 0; i < s.size(); ++i)
         {
             if (!s.ghost(i))
             {
                 owned.insert(s.globalIndex(i));
-                ++nOwned;
             }
         }
-        rankExchange::put(buf, nOwned);
+        rankExchange::put(buf, owned.size());
         for (label i = 0; i < s.size(); ++i)
         {
             if (!s.ghost(i))
             {
-                put(buf, s.record(i));
+                rankExchange::put(buf, s.globalIndex(i));
+                put(buf, s.particle(i).state());
             }
         }
         DynamicList<historyEntry> entries;
-        for (const auto& e : s.history().entries())
+        if (withHistory)
         {
-            if (owned.found(e.first.first()))
+            for (const auto& e : s.history().entries())
             {
-                entries.append({e.first.first(), e.first.second(), e.second});
+                if (owned.found(e.first.first()))
+                {
+                    entries.append
+                    (
+                        {e.first.first(), e.first.second(), e.second}
+                    );
+                }
             }
         }
         rankExchange::put(buf, entries.size());
@@ -831,38 +837,41 @@ void Foam::ownedGranularSteps::gatherScene(granularSystem* wholePtr) const
             put(buf, h);
         }
     }
+    return parts;
+}
 
-    const List<List<char>> all(exchange_.gather(parts));
-    if (all.empty())
+
+void Foam::ownedGranularSteps::unpackScene
+(
+    const UList<List<char>>& all,
+    granularSystem& whole,
+    const bool withHistory
+) const
+{
+    label nStates = 0;
+    if (withHistory)
     {
-        return;
+        whole.history().clear();
     }
-    if (!wholePtr)
-    {
-        FatalErrorInFunction
-            << "no system on rank 0 to take the whole scene"
-            << abort(FatalError);
-    }
-    granularSystem& whole = *wholePtr;
-    label nRecords = 0;
-    whole.history().clear();
+    rigidParticle::motionState state;
     for (const List<char>& buf : all)
     {
         label pos = 0, n = 0;
         rankExchange::get(buf, pos, n);
         for (label k = 0; k < n; ++k)
         {
-            record r;
-            get(buf, pos, r);
-            if (r.global < 0 || r.global >= whole.size())
+            label global = -1;
+            rankExchange::get(buf, pos, global);
+            get(buf, pos, state);
+            if (global < 0 || global >= whole.size())
             {
                 FatalErrorInFunction
-                    << "particle " << r.id << " of global index " << r.global
+                    << "a particle of global index " << global
                     << " is not in a scene of " << whole.size()
                     << abort(FatalError);
             }
-            whole.particle(r.global).setState(r.state);
-            ++nRecords;
+            whole.particle(global).setState(state);
+            ++nStates;
         }
         rankExchange::get(buf, pos, n);
         for (label k = 0; k < n; ++k)
@@ -872,12 +881,63 @@ void Foam::ownedGranularSteps::gatherScene(granularSystem* wholePtr) const
             whole.history().set(h.i, h.j, h.h);
         }
     }
-    if (nRecords != whole.size())
+    if (nStates != whole.size())
     {
         FatalErrorInFunction
-            << "the ranks own " << nRecords << " particles; the scene has "
+            << "the ranks own " << nStates << " particles; the scene has "
             << whole.size() << abort(FatalError);
     }
+}
+
+
+void Foam::ownedGranularSteps::gatherScene(granularSystem* whole) const
+{
+    const List<List<char>> all(exchange_.gather(packOwned(true)));
+    if (all.empty())
+    {
+        return;
+    }
+    if (!whole)
+    {
+        FatalErrorInFunction
+            << "no system on rank 0 to take the whole scene"
+            << abort(FatalError);
+    }
+    unpackScene(all, *whole, true);
+}
+
+
+void Foam::ownedGranularSteps::mirrorScene(granularSystem& whole) const
+{
+    unpackScene(exchange_.allGather(packOwned(false)), whole, false);
+}
+
+
+Foam::granularSystem::statistics Foam::ownedGranularSteps::stats() const
+{
+    const label K = systems_.size();
+    labelList nCandidates(K), nContacts(K), nWalls(K), nBuilds(K);
+    scalarList overlap(K), energy(K);
+    forAll(systems_, k)
+    {
+        const granularSystem::statistics& s = systems_[k].stats();
+        nCandidates[k] = s.nCandidatePairs;
+        nContacts[k] = s.nContacts;
+        nWalls[k] = s.nWallContacts;
+        nBuilds[k] = s.nListBuilds;
+        overlap[k] = s.maxOverlapRatio;
+        energy[k] = s.kineticEnergy;
+    }
+    // (the step's decisions, the same on every rank)
+    granularSystem::statistics s = systems_[0].stats();
+    s.nCandidatePairs = exchange_.sumOf(nCandidates);
+    s.nContacts = exchange_.sumOf(nContacts);
+    s.nWallContacts = exchange_.sumOf(nWalls);
+    s.nListBuilds = exchange_.sumOf(nBuilds);
+    s.maxOverlapRatio = exchange_.maxOf(overlap);
+    s.maxOverlapContact = labelPair(-1, -1);
+    s.kineticEnergy = exchange_.sumOf(energy);
+    return s;
 }
 
 

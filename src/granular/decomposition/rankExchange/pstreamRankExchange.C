@@ -151,4 +151,31 @@ Foam::label Foam::pstreamRankExchange::sumOf(const labelUList& perRank) const
 }
 
 
+Foam::scalar Foam::pstreamRankExchange::sumOf
+(
+    const UList<scalar>& perRank
+) const
+{
+    scalar sum = 0;
+    for (const scalar v : perRank)
+    {
+        sum += v;
+    }
+    return returnReduce(sum, sumOp<scalar>());
+}
+
+
+Foam::List<Foam::List<char>> Foam::pstreamRankExchange::allGather
+(
+    const UList<DynamicList<char>>& perRank
+) const
+{
+    List<List<char>> all(Pstream::nProcs());
+    all[Pstream::myProcNo()] = perRank[0];
+    Pstream::gatherList(all);
+    Pstream::scatterList(all);
+    return all;
+}
+
+
 // ************************************************************************* //

@@ -161,4 +161,27 @@ Foam::label Foam::virtualRankExchange::sumOf(const labelUList& perRank) const
 }
 
 
+Foam::scalar Foam::virtualRankExchange::sumOf
+(
+    const UList<scalar>& perRank
+) const
+{
+    scalar sum = 0;
+    for (const scalar v : perRank)
+    {
+        sum += v;
+    }
+    return sum;
+}
+
+
+Foam::List<Foam::List<char>> Foam::virtualRankExchange::allGather
+(
+    const UList<DynamicList<char>>& perRank
+) const
+{
+    return gather(perRank);
+}
+
+
 // ************************************************************************* //
