@@ -211,6 +211,17 @@ label compareRuns
             EXPECT_EQ(s.stats().nFallbacks, whole->stats().nFallbacks)
                 << "step " << step;
         }
+        // Locality: no record beyond reach; each rank sends one message
+        // per neighbour per exchange (the ghosts, each sub-step's states,
+        // the migration), so at most (n + 2) per neighbour unless the
+        // step was redone with a wider reach
+        const ownedGranularSteps::counters& c = owned.lastCounters();
+        EXPECT_EQ(c.nFarRecords, 0) << "step " << step;
+        if (c.nWiderReach == 0)
+        {
+            EXPECT_LE(c.maxRankMessages, (n + 2)*c.maxNeighbours)
+                << "step " << step;
+        }
         migrated += owned.lastCounters().nMigrated;
         widened += owned.lastCounters().nWiderReach;
         ghosts += owned.lastCounters().nGhostsSent;
@@ -332,6 +343,86 @@ TEST(ownedGranularSteps, particlesFlungBeyondTheGhostsReachRedoTheStep)
     );
     EXPECT_GT(contacts, 0);
     EXPECT_GT(widened, 0);
+}
+
+
+namespace
+{
+
+//- Every rank in memory, and once asked, rank 0's ghost records for its
+//- neighbour rank 1 sent to rank 5 as well (6 boxes along x: rank 5's box
+//- lies beyond those particles' reach, across the periodic boundary)
+class injectingExchange
+:
+    public virtualRankExchange
+{
+public:
+
+    mutable bool inject = false;
+
+    using virtualRankExchange::virtualRankExchange;
+
+    void exchange(UList<messages>& perRank) const override
+    {
+        if (inject)
+        {
+            inject = false;
+            messages& m = perRank[0];
+            const label a = m.ranks.find(1), b = m.ranks.find(5);
+            EXPECT_GE(a, 0);
+            EXPECT_GE(b, 0);
+            EXPECT_GT(m.out[a].size(), 0);
+            m.out[b].append(m.out[a]);
+        }
+        virtualRankExchange::exchange(perRank);
+    }
+};
+
+} // End anonymous namespace
+
+
+TEST(ownedGranularSteps, aRecordBeyondTheReachIsCountedAndDropped)
+{
+    // The counter that says no rank hears of a particle beyond its reach:
+    // records sent where they do not belong are counted (and dropped: the
+    // step's bits stay those of the whole scene)
+    auto whole = makeScene("", "", 0.6);
+    PtrList<granularSystem> parts(6);
+    for (label k = 0; k < 6; ++k)
+    {
+        parts.set(k, makeScene("", "", 0.6).ptr());
+    }
+    const boxDecomposition decomposition
+    (
+        whole->domain(), whole->periodic(), labelVector(6, 1, 1)
+    );
+    const injectingExchange exchange(6);
+    ownedGranularSteps owned
+    (
+        UPtrList<granularSystem>(parts), decomposition, exchange
+    );
+    const scalar Deltat = 10*whole->maxSubStep();
+    for (label step = 0; step < 4; ++step)
+    {
+        exchange.inject = step == 2;
+        whole->evolve(Deltat);
+        owned.evolve(Deltat);
+        const label far = owned.lastCounters().nFarRecords;
+        if (step == 2)
+        {
+            EXPECT_GT(far, 0);
+            std::cout << far << " records beyond reach counted at step 2"
+                << nl;
+        }
+        else
+        {
+            EXPECT_EQ(far, 0) << "step " << step;
+        }
+        for (const granularSystem::particleRecord& r : owned.ownedRecords())
+        {
+            expectSameBits(whole->particle(r.global), r, step);
+        }
+    }
 }
 
 

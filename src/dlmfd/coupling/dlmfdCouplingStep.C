@@ -329,6 +329,13 @@ Foam::label Foam::dlmfdCoupling::evolveOwned
     }
     const label nSub = owned_->evolve(mesh_.time().deltaTValue());
     part.checkHealth(mesh_.time().value());
+    if (const label far = owned_->lastCounters().nFarRecords)
+    {
+        WarningInFunction
+            << "t = " << mesh_.time().value() << ": " << far
+            << " ghost records came to a rank beyond their reach and were"
+            << " dropped" << endl;
+    }
 
     // Every rank's mirror of the scene: the fictitious domain and the
     // output still need every particle

@@ -190,7 +190,9 @@ Foam::granularRun::granularRun(Time& runTime, const sceneEffects& effects)
     granularSeconds_(0),
     outputSeconds_(0),
     nSubSteps_(0),
-    nParticles_(0)
+    nParticles_(0),
+    ownedTotals_(),
+    nOwnedSteps_(0)
 {
     granular_ = readScene(effects, true);
     granularSystem& granular = *granular_;
@@ -279,6 +281,26 @@ void Foam::granularRun::run()
         // rank)
         const granularSystem::statistics s =
             owned_ ? owned_->stats() : granular.stats();
+        if (owned_)
+        {
+            const ownedGranularSteps::counters& c = owned_->lastCounters();
+            if (c.nFarRecords)
+            {
+                WarningInFunction
+                    << "t = " << runTime_.value() << ": " << c.nFarRecords
+                    << " ghost records came to a rank beyond their reach"
+                    << " and were dropped" << endl;
+            }
+            ownedTotals_.nGhostsSent += c.nGhostsSent;
+            ownedTotals_.nMigrated += c.nMigrated;
+            ownedTotals_.nWiderReach += c.nWiderReach;
+            ownedTotals_.maxRankMessages += c.maxRankMessages;
+            ownedTotals_.maxRankBytes += c.maxRankBytes;
+            ownedTotals_.maxNeighbours =
+                max(ownedTotals_.maxNeighbours, c.maxNeighbours);
+            ownedTotals_.nFarRecords += c.nFarRecords;
+            ++nOwnedSteps_;
+        }
         if (dat)
         {
             dat() << runTime_.value() << ' ' << s.kineticEnergy << ' '
@@ -310,6 +332,21 @@ void Foam::granularRun::run()
                 << endl;
         }
         progress.step();
+    }
+
+    if (owned_ && nOwnedSteps_)
+    {
+        const scalar perStep = 1.0/nOwnedSteps_;
+        Info<< nl << "Owned particles, per step over " << nOwnedSteps_
+            << " steps: the busiest rank sent "
+            << perStep*ownedTotals_.maxRankMessages << " messages and "
+            << perStep*ownedTotals_.maxRankBytes << " bytes, to at most "
+            << ownedTotals_.maxNeighbours << " neighbouring ranks; "
+            << perStep*ownedTotals_.nGhostsSent << " ghost copies and "
+            << perStep*ownedTotals_.nMigrated << " changes of rank over"
+            << " all ranks; " << ownedTotals_.nWiderReach << " steps redone"
+            << " with a wider reach; " << ownedTotals_.nFarRecords
+            << " records beyond reach" << endl;
     }
 }
 

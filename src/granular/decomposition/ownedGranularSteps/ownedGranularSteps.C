@@ -56,6 +56,37 @@ void get(const UList<char>& buf, label& pos, rigidParticle::motionState& s)
     rankExchange::get(buf, pos, s.Tstart);
 }
 
+//- What a ghost needs of its owner's state at a sub-step: pose,
+//- velocities and the forces the sub-step started with (its dashpots
+//- predict the velocities with them); the force being summed is the
+//- owner's alone
+void putGhost(DynamicList<char>& buf, const rigidParticle::motionState& s)
+{
+    rankExchange::put(buf, s.x);
+    rankExchange::put(buf, s.q);
+    rankExchange::put(buf, s.U);
+    rankExchange::put(buf, s.omega);
+    rankExchange::put(buf, s.Fstart);
+    rankExchange::put(buf, s.Tstart);
+}
+
+void getGhost
+(
+    const UList<char>& buf,
+    label& pos,
+    rigidParticle::motionState& s
+)
+{
+    rankExchange::get(buf, pos, s.x);
+    rankExchange::get(buf, pos, s.q);
+    rankExchange::get(buf, pos, s.U);
+    rankExchange::get(buf, pos, s.omega);
+    rankExchange::get(buf, pos, s.Fstart);
+    rankExchange::get(buf, pos, s.Tstart);
+    s.F = Zero;
+    s.T = Zero;
+}
+
 void put(DynamicList<char>& buf, const granularSystem::particleRecord& r)
 {
     rankExchange::put(buf, r.global);
@@ -157,12 +188,15 @@ void Foam::ownedGranularSteps::setNeighbours(const scalar reach)
 
 void Foam::ownedGranularSteps::countMessages()
 {
-    for (const rankExchange::messages& m : messages_)
+    forAll(messages_, k)
     {
+        const rankExchange::messages& m = messages_[k];
         counters_.nMessages += m.out.size();
+        rankMessages_[k] += m.out.size();
         for (const DynamicList<char>& buf : m.out)
         {
             counters_.nBytes += buf.size();
+            rankBytes_[k] += buf.size();
         }
     }
 }
@@ -232,6 +266,19 @@ void Foam::ownedGranularSteps::distributeGhosts(const scalar travel)
             {
                 record r;
                 get(msg.in[m], pos, r);
+                // A record about a particle that cannot touch this rank's
+                // own is not one it should have been sent
+                decomposition_.ranksWithin
+                (
+                    r.state.x,
+                    s.shapes()[r.shape].boundingRadius() + reachBeyond,
+                    near_
+                );
+                if (!near_.found(exchange_.localRanks()[k]))
+                {
+                    ++counters_.nFarRecords;
+                    continue;
+                }
                 held.append(r);
                 from.append(m);
             }
@@ -294,7 +341,7 @@ void Foam::ownedGranularSteps::updateGhosts()
             msg.out[m].clear();
             for (const label i : sendTo_[k][m])
             {
-                put(msg.out[m], s.particle(i).state());
+                putGhost(msg.out[m], s.particle(i).state());
             }
         }
     }
@@ -310,7 +357,7 @@ void Foam::ownedGranularSteps::updateGhosts()
             rigidParticle::motionState state;
             for (const label g : receiveFrom_[k][m])
             {
-                get(msg.in[m], pos, state);
+                getGhost(msg.in[m], pos, state);
                 s.setGhostState(g, state);
             }
         }
@@ -407,6 +454,20 @@ void Foam::ownedGranularSteps::dropGhostsAndMigrate()
             {
                 record r;
                 get(msg.in[m], pos, r);
+                if
+                (
+                    decomposition_.rankOf(r.state.x)
+                 != exchange_.localRanks()[k]
+                )
+                {
+                    FatalErrorInFunction
+                        << "particle " << r.id << " at " << r.state.x
+                        << " came to rank " << exchange_.localRanks()[k]
+                        << " from rank " << msg.ranks[m] << ", but lies in"
+                        << " the region of rank "
+                        << decomposition_.rankOf(r.state.x)
+                        << abort(FatalError);
+                }
                 kept[k].append(r);
             }
             rankExchange::get(msg.in[m], pos, nEntries);
@@ -627,6 +688,10 @@ Foam::ownedGranularSteps::ownedGranularSteps
 Foam::label Foam::ownedGranularSteps::evolve(const scalar Deltat)
 {
     counters_ = counters();
+    rankMessages_.setSize(systems_.size());
+    rankMessages_ = 0;
+    rankBytes_.setSize(systems_.size());
+    rankBytes_ = 0;
     for (granularSystem& s : systems_)
     {
         s.resetStatistics(false);
@@ -768,6 +833,28 @@ Foam::label Foam::ownedGranularSteps::evolve(const scalar Deltat)
         }
     }
     dropGhostsAndMigrate();
+
+    // The most any one rank sent, and the most neighbours
+    scalarList msgs(systems_.size()), bytes(systems_.size());
+    scalarList nbrs(systems_.size());
+    forAll(systems_, k)
+    {
+        msgs[k] = rankMessages_[k];
+        bytes[k] = rankBytes_[k];
+        nbrs[k] = messages_[k].ranks.size();
+    }
+    // (summed over the ranks of this process so far)
+    for (label* c :
+        {
+            &counters_.nGhostsSent, &counters_.nMigrated,
+            &counters_.nMessages, &counters_.nBytes, &counters_.nFarRecords
+        })
+    {
+        *c = exchange_.sumOf(labelList(1, *c));
+    }
+    counters_.maxRankMessages = label(exchange_.maxOf(msgs));
+    counters_.maxRankBytes = label(exchange_.maxOf(bytes));
+    counters_.maxNeighbours = label(exchange_.maxOf(nbrs));
     return n;
 }
 
