@@ -291,14 +291,14 @@ void Foam::granularRun::run()
                     << " ghost records came to a rank beyond their reach"
                     << " and were dropped" << endl;
             }
-            ownedTotals_.nGhostsSent += c.nGhostsSent;
-            ownedTotals_.nMigrated += c.nMigrated;
-            ownedTotals_.nWiderReach += c.nWiderReach;
-            ownedTotals_.maxRankMessages += c.maxRankMessages;
-            ownedTotals_.maxRankBytes += c.maxRankBytes;
+            ownedTotals_.ghostsSent += c.nGhostsSent;
+            ownedTotals_.migrated += c.nMigrated;
+            ownedTotals_.widerReach += c.nWiderReach;
+            ownedTotals_.rankMessages += c.maxRankMessages;
+            ownedTotals_.rankBytes += c.maxRankBytes;
             ownedTotals_.maxNeighbours =
                 max(ownedTotals_.maxNeighbours, c.maxNeighbours);
-            ownedTotals_.nFarRecords += c.nFarRecords;
+            ownedTotals_.farRecords += c.nFarRecords;
             ++nOwnedSteps_;
         }
         if (dat)
@@ -339,13 +339,13 @@ void Foam::granularRun::run()
         const scalar perStep = 1.0/nOwnedSteps_;
         Info<< nl << "Owned particles, per step over " << nOwnedSteps_
             << " steps: the busiest rank sent "
-            << perStep*ownedTotals_.maxRankMessages << " messages and "
-            << perStep*ownedTotals_.maxRankBytes << " bytes, to at most "
+            << perStep*ownedTotals_.rankMessages << " messages and "
+            << perStep*ownedTotals_.rankBytes << " bytes, to at most "
             << ownedTotals_.maxNeighbours << " neighbouring ranks; "
-            << perStep*ownedTotals_.nGhostsSent << " ghost copies and "
-            << perStep*ownedTotals_.nMigrated << " changes of rank over"
-            << " all ranks; " << ownedTotals_.nWiderReach << " steps redone"
-            << " with a wider reach; " << ownedTotals_.nFarRecords
+            << perStep*ownedTotals_.ghostsSent << " ghost copies and "
+            << perStep*ownedTotals_.migrated << " changes of rank over"
+            << " all ranks; " << ownedTotals_.widerReach << " steps redone"
+            << " with a wider reach; " << ownedTotals_.farRecords
             << " records beyond reach" << endl;
     }
 }

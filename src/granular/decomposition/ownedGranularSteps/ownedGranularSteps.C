@@ -847,13 +847,14 @@ Foam::label Foam::ownedGranularSteps::evolve(const scalar Deltat)
     for (label* c :
         {
             &counters_.nGhostsSent, &counters_.nMigrated,
-            &counters_.nMessages, &counters_.nBytes, &counters_.nFarRecords
+            &counters_.nMessages, &counters_.nFarRecords
         })
     {
         *c = exchange_.sumOf(labelList(1, *c));
     }
+    counters_.nBytes = exchange_.sumOf(scalarList(1, counters_.nBytes));
     counters_.maxRankMessages = label(exchange_.maxOf(msgs));
-    counters_.maxRankBytes = label(exchange_.maxOf(bytes));
+    counters_.maxRankBytes = exchange_.maxOf(bytes);
     counters_.maxNeighbours = label(exchange_.maxOf(nbrs));
     return n;
 }
