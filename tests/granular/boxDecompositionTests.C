@@ -183,4 +183,65 @@ TEST(boxDecomposition, noBoxesOrAFlatDomainIsRefused)
 }
 
 
+TEST(boxDecomposition, neighboursAreSymmetricAndHoldEveryRankWithinReachOfTheBox)
+{
+    // The ranks a rank exchanges with: every rank that ranksWithin names
+    // for a point of its box (sampled, corners and faces included) within
+    // the reach, the relation symmetric, the rank itself never among them
+    const boundBox domain(point(0, 0, 0), point(0.3, 0.2, 0.1));
+    Random rnd(7);
+    label nChecks = 0;
+    for (const labelVector n : {labelVector(6, 1, 1), labelVector(3, 4, 2)})
+    for (const bool px : {false, true})
+    for (const scalar reach : {0.01, 0.04, 0.12})
+    {
+        const FixedList<bool, 3> periodic({px, true, false});
+        const boxDecomposition boxes(domain, periodic, n);
+        List<DynamicList<label>> nbrs(boxes.size());
+        for (label r = 0; r < boxes.size(); ++r)
+        {
+            boxes.neighbours(r, reach, nbrs[r]);
+            EXPECT_FALSE(nbrs[r].found(r)) << "rank " << r;
+        }
+        DynamicList<label> within;
+        for (label r = 0; r < boxes.size(); ++r)
+        {
+            for (const label q : nbrs[r])
+            {
+                EXPECT_TRUE(nbrs[q].found(r)) << r << " names " << q;
+            }
+            const boundBox b = boxes.box(r);
+            for (label k = 0; k < 200; ++k)
+            {
+                // Inside the box, a third of them on a face or a corner
+                point x;
+                for (direction d = 0; d < 3; ++d)
+                {
+                    const scalar u = rnd.sample01<scalar>();
+                    x[d] =
+                        k % 3 == 0
+                      ? (u < 0.5 ? b.min()[d] : b.max()[d] - 1e-12)
+                      : b.min()[d] + u*(b.max()[d] - b.min()[d]);
+                }
+                if (boxes.rankOf(x) != r)
+                {
+                    continue;
+                }
+                boxes.ranksWithin(x, reach, within);
+                for (const label q : within)
+                {
+                    ++nChecks;
+                    EXPECT_TRUE(q == r || nbrs[r].found(q))
+                        << "rank " << r << " point " << x.x() << ' '
+                        << x.y() << ' ' << x.z() << " reach "
+                        << reach << ": rank " << q << " is not a neighbour";
+                }
+            }
+        }
+    }
+    std::cout << nChecks << " ranks within reach checked" << nl;
+    EXPECT_GT(nChecks, 10000);
+}
+
+
 // ************************************************************************* //
