@@ -27,6 +27,14 @@ Description
     particle shapes to VTK/ with .series files for ParaView, and a line per
     time step to postProcessing/granular/<startTime>/granular.dat.
 
+    In parallel (mpirun -np P granularFoam -parallel), with
+    particleDistribution owned in constant/collisionProperties and a
+    system/decomposeParDict of P subdomains, method simple and its
+    simpleCoeffs n: each rank moves the particles of its box of the
+    collision domain (Foam::ownedGranularSteps), with the same bits as one
+    process; nothing is decomposed beforehand, and the particle file and
+    VTK files are written by the master.
+
 Usage
     \b granularFoam [OPTIONS]
 
