@@ -47,7 +47,9 @@ void Foam::pstreamRankExchange::exchange(UList<messages>& perRank) const
     {
         return;
     }
-    const int tag = UPstream::msgType();
+    // A tag of its own: no message of OpenFOAM's own collectives (which
+    // use msgType()) can ever be taken for one of these
+    const int tag = UPstream::msgType() + 2718;
     const auto comms = UPstream::commsTypes::nonBlocking;
 
     // The sizes, then the messages (a rank hears only from its
