@@ -198,7 +198,7 @@ label compareRuns
     {
         const label n = whole->evolve(Deltat);
         EXPECT_EQ(owned.evolve(Deltat), n) << "step " << step;
-        EXPECT_EQ(owned.nContacts(), whole->stats().nContacts)
+        EXPECT_EQ(owned.stats().nContacts, whole->stats().nContacts)
             << "step " << step;
         contacts += whole->stats().nContacts;
         skipped += whole->stats().contactsSkipped;

@@ -436,15 +436,4 @@ Foam::granularSystem::statistics Foam::ownedGranularSteps::stats() const
 }
 
 
-Foam::label Foam::ownedGranularSteps::nContacts() const
-{
-    labelList n(systems_.size());
-    forAll(systems_, k)
-    {
-        n[k] = systems_[k].stats().nContacts;
-    }
-    return exchange_.sumOf(n);
-}
-
-
 // ************************************************************************* //
