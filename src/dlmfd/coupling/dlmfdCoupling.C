@@ -507,7 +507,8 @@ Foam::dlmfdCoupling::dlmfdCoupling
           ? "a penalty, K dt = " + Foam::name(penalty_.factor())
           : word("the last multipliers' force")) << nl
         << "    periods " << fd_.period() << " m (0: not periodic); "
-        << (Pstream::parRun() ? "granular step on the master of " : "")
+        << (Pstream::parRun() ? "granular step on " : "")
+        << (owned_ ? "every one of " : Pstream::parRun() ? "the master of " : "")
         << (Pstream::parRun() ? Foam::name(Pstream::nProcs()) + " ranks" : "serial")
         << nl;
     granular_.effects().report(Info);
@@ -519,23 +520,28 @@ Foam::dlmfdCoupling::dlmfdCoupling
         checkChangingMesh();
     }
 
-    if (Pstream::master())
+    // The time series: the master's whole scene, or with owned particles
+    // on several ranks each rank's own particles in its processor folder,
+    // each row led by the time index and the particle's global index (what
+    // mergeParticleSeries sorts by to make the master's file)
+    if (Pstream::master() || seriesPerRank())
     {
         const fileName dir
         (
-            mesh.time().globalPath()/"postProcessing"/"dlmfdParticles"
-           /mesh.time().timeName()
+            (seriesPerRank() ? mesh.time().path() : mesh.time().globalPath())
+           /"postProcessing"/"dlmfdParticles"/mesh.time().timeName()
         );
         mkDir(dir);
         series_.reset(new OFstream(dir/"particles.dat"));
         series_().precision(10);
         series_()
-            << "# time id x y z qw qx qy qz Ux Uy Uz omegax omegay omegaz"
+            << (seriesPerRank() ? "# timeIndex globalIndex " : "# ")
+            << "time id x y z qw qx qy qz Ux Uy Uz omegax omegay omegaz"
             << " Fhx Fhy Fhz Thx Thy Thz  (SI units, world frame)" << nl;
     }
-    if (mesh.time().timeIndex() == 0 && Pstream::master())
+    if (mesh.time().timeIndex() == 0)
     {
-        vtk_.write(granular_, mesh.time().value(), 0);
+        writeVTK();
     }
 }
 
@@ -558,6 +564,20 @@ void Foam::dlmfdCoupling::write()
     if (Pstream::master())
     {
         granular_.writeParticles(runTime.timePath()/"uniform");
+    }
+    writeVTK();
+}
+
+
+void Foam::dlmfdCoupling::writeVTK()
+{
+    const Time& runTime = mesh_.time();
+    if (seriesPerRank())
+    {
+        vtk_.writePieces(*part_, runTime.value(), runTime.timeIndex());
+    }
+    else if (Pstream::master())
+    {
         vtk_.write(granular_, runTime.value(), runTime.timeIndex());
     }
 }

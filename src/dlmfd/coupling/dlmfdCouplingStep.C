@@ -541,30 +541,68 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
     Info<< ", " << s.nContacts << " + " << s.nWallContacts << " wall contacts,"
         << " max overlap " << s.maxOverlapRatio << " D" << endl;
 
-    if (series_.valid() && mesh_.time().timeIndex() % seriesInterval_ == 0)
+    if (mesh_.time().timeIndex() % seriesInterval_ == 0)
     {
-        OFstream& os = series_();
-        const scalar t = mesh_.time().value();
-        for (label i = 0; i < n; ++i)
-        {
-            const rigidParticle& p = granular_.particle(i);
-            const quaternion& q = p.orientation();
-            const point& x = p.position();
-            const vector& V = p.velocity();
-            const vector& w = p.omega();
-            os  << t << ' ' << granular_.id(i) << ' '
-                << x.x() << ' ' << x.y() << ' ' << x.z() << ' '
-                << q.w() << ' ' << q.v().x() << ' ' << q.v().y() << ' '
-                << q.v().z() << ' '
-                << V.x() << ' ' << V.y() << ' ' << V.z() << ' '
-                << w.x() << ' ' << w.y() << ' ' << w.z() << ' '
-                << Fh_[i].x() << ' ' << Fh_[i].y() << ' ' << Fh_[i].z() << ' '
-                << Th_[i].x() << ' ' << Th_[i].y() << ' ' << Th_[i].z()
-                << nl;
-        }
-        os.flush();
+        writeSeriesRows();
     }
     seriesSeconds_ += clock.timeIncrement();
+}
+
+
+void Foam::dlmfdCoupling::writeSeriesRows()
+{
+    if (seriesPerRank())
+    {
+        // The hydrodynamic forces are the master's: each owner writes its
+        // particles' rows
+        Pstream::scatter(Fh_);
+        Pstream::scatter(Th_);
+    }
+    if (!series_.valid())
+    {
+        return;
+    }
+    OFstream& os = series_();
+    const scalar t = mesh_.time().value();
+    const auto row = [&](const label i)
+    {
+        const rigidParticle& p = granular_.particle(i);
+        const quaternion& q = p.orientation();
+        const point& x = p.position();
+        const vector& V = p.velocity();
+        const vector& w = p.omega();
+        os  << t << ' ' << granular_.id(i) << ' '
+            << x.x() << ' ' << x.y() << ' ' << x.z() << ' '
+            << q.w() << ' ' << q.v().x() << ' ' << q.v().y() << ' '
+            << q.v().z() << ' '
+            << V.x() << ' ' << V.y() << ' ' << V.z() << ' '
+            << w.x() << ' ' << w.y() << ' ' << w.z() << ' '
+            << Fh_[i].x() << ' ' << Fh_[i].y() << ' ' << Fh_[i].z() << ' '
+            << Th_[i].x() << ' ' << Th_[i].y() << ' ' << Th_[i].z()
+            << nl;
+    };
+    if (seriesPerRank())
+    {
+        const granularSystem& part = *part_;
+        const label timeIndex = mesh_.time().timeIndex();
+        for (label k = 0; k < part.size(); ++k)
+        {
+            if (!part.ghost(k))
+            {
+                const label i = part.globalIndex(k);
+                os  << timeIndex << ' ' << i << ' ';
+                row(i);
+            }
+        }
+    }
+    else
+    {
+        for (label i = 0; i < granular_.size(); ++i)
+        {
+            row(i);
+        }
+    }
+    os.flush();
 }
 
 

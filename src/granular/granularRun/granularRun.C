@@ -238,13 +238,24 @@ void Foam::granularRun::run()
 {
     granularSystem& granular = *granular_;
 
-    // Written by the master (owned mode: the whole scene gathered there)
+    // The VTK files: the master's whole scene, or with owned particles on
+    // several ranks each rank's piece and the master's index of them
     granularVTKWriter vtk(runTime_.globalPath()/"VTK", runTime_.value());
-    const bool firstWrite =
-        runTime_.timeIndex() == 0 || !isDir(runTime_.globalPath()/"VTK");
-    if (const granularSystem* scene = firstWrite ? sceneToWrite() : nullptr)
+    const bool pieces = owned_.valid() && Pstream::parRun();
+    const auto writeVTK = [&](const granularSystem* scene)
     {
-        vtk.write(*scene, runTime_.value(), runTime_.timeIndex());
+        if (pieces)
+        {
+            vtk.writePieces(granular, runTime_.value(), runTime_.timeIndex());
+        }
+        else if (scene)
+        {
+            vtk.write(*scene, runTime_.value(), runTime_.timeIndex());
+        }
+    };
+    if (runTime_.timeIndex() == 0 || !isDir(runTime_.globalPath()/"VTK"))
+    {
+        writeVTK(pieces ? nullptr : sceneToWrite());
     }
 
     autoPtr<OFstream> dat;
@@ -299,6 +310,9 @@ void Foam::granularRun::run()
             ownedTotals_.maxNeighbours =
                 max(ownedTotals_.maxNeighbours, c.maxNeighbours);
             ownedTotals_.farRecords += c.nFarRecords;
+            ownedTotals_.maxHeld = max(ownedTotals_.maxHeld, c.maxHeld);
+            ownedTotals_.maxSearchCells =
+                max(ownedTotals_.maxSearchCells, c.maxSearchCells);
             ++nOwnedSteps_;
         }
         if (dat)
@@ -313,14 +327,16 @@ void Foam::granularRun::run()
         {
             clock.timeIncrement();
             runTime_.write();
-            if (const granularSystem* scene = sceneToWrite())
+            // (owned mode: the restart file gathered on the master)
+            const granularSystem* scene = sceneToWrite();
+            if (scene)
             {
                 scene->writeParticles
                 (
                     runTime_.globalPath()/runTime_.timeName()
                 );
-                vtk.write(*scene, runTime_.value(), runTime_.timeIndex());
             }
+            writeVTK(scene);
             outputSeconds_ += clock.timeIncrement();
 
             Info<< "Time = " << runTime_.timeName()
@@ -346,7 +362,10 @@ void Foam::granularRun::run()
             << perStep*ownedTotals_.migrated << " changes of rank over"
             << " all ranks; " << ownedTotals_.widerReach << " steps redone"
             << " with a wider reach; " << ownedTotals_.farRecords
-            << " records beyond reach" << endl;
+            << " records beyond reach; at most " << ownedTotals_.maxHeld
+            << " particles held by a rank (of " << nParticles_ << "), its"
+            << " contact search over at most " << ownedTotals_.maxSearchCells
+            << " cells" << endl;
     }
 }
 

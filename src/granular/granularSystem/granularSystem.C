@@ -148,7 +148,8 @@ void Foam::granularSystem::updateParticleData(const bool keepHistory)
 
     search_.reset
     (
-        settings_.domain(), settings_.periodic(), scene.n, rMax, Dmin
+        settings_.domain(), settings_.periodic(), scene.n, rMax, Dmin,
+        searchRegion_.get()
     );
     if (!keepHistory)
     {
@@ -293,6 +294,7 @@ Foam::granularSystem::granularSystem
     contactsOn_(true),
     rotationOn_(effects_.settle("rotation", true, "default")),
     partOfScene_(false),
+    searchRegion_(),
     dtMax_(VGREAT),
     search_(),
     integrator_(settings_)

@@ -58,7 +58,8 @@ Foam::granularSystem::particleRecord Foam::granularSystem::record
 void Foam::granularSystem::setParticles
 (
     const UList<particleRecord>& records,
-    const UList<bool>& ghost
+    const UList<bool>& ghost,
+    const boundBox* region
 )
 {
     if (!partOfScene_)
@@ -67,6 +68,7 @@ void Foam::granularSystem::setParticles
             << "a system that holds the whole scene takes no records"
             << " (setScene first)" << abort(FatalError);
     }
+    searchRegion_.reset(region ? new boundBox(*region) : nullptr);
     particles_.clear();
     particles_.reserve(records.size());
     ids_.clear();

@@ -118,6 +118,23 @@ namespace
 }
 
 
+// * * * * * * * * * * * * * Static Member Data  * * * * * * * * * * * * * //
+
+// The arrays writeParticles writes, in its order
+const std::vector<Foam::granularVTKWriter::dataArray>
+    Foam::granularVTKWriter::polyhedraArrays
+{
+    {"Int32", "id", 1}, {"Float64", "velocity", 3}, {"Float64", "omega", 3}
+};
+
+const std::vector<Foam::granularVTKWriter::dataArray>
+    Foam::granularVTKWriter::sphereArrays
+{
+    {"Int32", "id", 1}, {"Float64", "diameter", 1},
+    {"Float64", "velocity", 3}, {"Float64", "omega", 3}
+};
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 Foam::List<Foam::Tuple2<Foam::word, Foam::scalar>>
@@ -172,6 +189,42 @@ void Foam::granularVTKWriter::writeSeries
 }
 
 
+void Foam::granularVTKWriter::writePieceIndex
+(
+    const fileName& file,
+    const word& pieceDir,
+    const word& kind,
+    const char* dataKind,
+    const char* activeScalars,
+    const std::vector<dataArray>& arrays
+)
+{
+    const fileName tmp(file + ".tmp");
+    {
+        OFstream os(tmp);
+        os  << "<?xml version=\"1.0\"?>\n"
+            << "<VTKFile type=\"PPolyData\" version=\"0.1\""
+            << " byte_order=\"LittleEndian\">\n<PPolyData GhostLevel=\"0\">\n"
+            << "<PPoints>\n<PDataArray type=\"Float64\" Name=\"Points\""
+            << " NumberOfComponents=\"3\"/>\n</PPoints>\n"
+            << '<' << dataKind << " Scalars=\"" << activeScalars << "\">\n";
+        for (const dataArray& a : arrays)
+        {
+            os  << "<PDataArray type=\"" << a.type << "\" Name=\"" << a.name
+                << "\" NumberOfComponents=\"" << a.nComponents << "\"/>\n";
+        }
+        os  << "</" << dataKind << ">\n";
+        for (label r = 0; r < Pstream::nProcs(); ++r)
+        {
+            os  << "<Piece Source=\"" << pieceDir << '/' << kind << '_' << r
+                << ".vtp\"/>\n";
+        }
+        os  << "</PPolyData>\n</VTKFile>\n";
+    }
+    commit(tmp, file);
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::granularVTKWriter::granularVTKWriter
@@ -182,23 +235,22 @@ Foam::granularVTKWriter::granularVTKWriter
 :
     dir_(dir),
     polyhedra_(readSeries(dir/"polyhedra.vtp.series", startTime)),
-    spheres_(readSeries(dir/"spheres.vtp.series", startTime))
+    spheres_(readSeries(dir/"spheres.vtp.series", startTime)),
+    polyhedraPieces_(readSeries(dir/"polyhedra.pvtp.series", startTime)),
+    spherePieces_(readSeries(dir/"spheres.pvtp.series", startTime))
 {}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::granularVTKWriter::write
+void Foam::granularVTKWriter::writeParticles
 (
     const granularSystem& system,
-    const scalar t,
-    const label index
-)
+    const bool ownedOnly,
+    const fileName& polyFile,
+    const fileName& sphereFile
+) const
 {
-    // The folder made at the first write, not before: a run refused at
-    // start leaves no VTK folder behind
-    mkDir(dir_);
-
     // Spheres: one point each
     DynamicList<point> centres;
     DynamicList<scalar> diameters;
@@ -212,6 +264,10 @@ void Foam::granularVTKWriter::write
 
     for (label i = 0; i < system.size(); ++i)
     {
+        if (ownedOnly && system.ghost(i))
+        {
+            continue;
+        }
         const rigidParticle& p = system.particle(i);
         if (const auto* s = isA<particleShapes::sphere>(p.shape()))
         {
@@ -294,12 +350,9 @@ void Foam::granularVTKWriter::write
         }
     }
 
-    const word polyName("polyhedra_" + Foam::name(index) + ".vtp");
-    const word sphereName("spheres_" + Foam::name(index) + ".vtp");
-
     writePolyData
     (
-        dir_/polyName, points, "Polys", connectivity, offsets,
+        polyFile, points, "Polys", connectivity, offsets,
         "CellData", "id",
         [&](Ostream& os)
         {
@@ -319,7 +372,7 @@ void Foam::granularVTKWriter::write
     }
     writePolyData
     (
-        dir_/sphereName, centres, "Verts", verts, vertOffsets,
+        sphereFile, centres, "Verts", verts, vertOffsets,
         "PointData", "diameter",
         [&](Ostream& os)
         {
@@ -329,11 +382,69 @@ void Foam::granularVTKWriter::write
             writeVectors(os, "omega", sphereOmega);
         }
     );
+}
+
+
+void Foam::granularVTKWriter::write
+(
+    const granularSystem& system,
+    const scalar t,
+    const label index
+)
+{
+    // The folder made at the first write, not before: a run refused at
+    // start leaves no VTK folder behind
+    mkDir(dir_);
+    const word polyName("polyhedra_" + Foam::name(index) + ".vtp");
+    const word sphereName("spheres_" + Foam::name(index) + ".vtp");
+    writeParticles(system, false, dir_/polyName, dir_/sphereName);
 
     polyhedra_.append(Tuple2<word, scalar>(polyName, t));
     spheres_.append(Tuple2<word, scalar>(sphereName, t));
     writeSeries(dir_/"polyhedra.vtp.series", polyhedra_);
     writeSeries(dir_/"spheres.vtp.series", spheres_);
+}
+
+
+void Foam::granularVTKWriter::writePieces
+(
+    const granularSystem& part,
+    const scalar t,
+    const label index
+)
+{
+    // This rank's piece: its own particles, not its ghosts
+    const fileName pieceDir(dir_/"pieces_" + Foam::name(index));
+    mkDir(pieceDir);
+    const word rank(Foam::name(Pstream::myProcNo()));
+    writeParticles
+    (
+        part, true,
+        pieceDir/"polyhedra_" + rank + ".vtp",
+        pieceDir/"spheres_" + rank + ".vtp"
+    );
+    if (!Pstream::master())
+    {
+        return;
+    }
+
+    // The index of the pieces, and its series
+    const word polyName("polyhedra_" + Foam::name(index) + ".pvtp");
+    const word sphereName("spheres_" + Foam::name(index) + ".pvtp");
+    writePieceIndex
+    (
+        dir_/polyName, pieceDir.name(), "polyhedra", "PCellData", "id",
+        polyhedraArrays
+    );
+    writePieceIndex
+    (
+        dir_/sphereName, pieceDir.name(), "spheres", "PPointData", "diameter",
+        sphereArrays
+    );
+    polyhedraPieces_.append(Tuple2<word, scalar>(polyName, t));
+    spherePieces_.append(Tuple2<word, scalar>(sphereName, t));
+    writeSeries(dir_/"polyhedra.pvtp.series", polyhedraPieces_);
+    writeSeries(dir_/"spheres.pvtp.series", spherePieces_);
 }
 
 

@@ -27,10 +27,71 @@ Foam::linkedCells::linkedCells
 :
     domain_(domain),
     periodic_(periodic),
+    unwrapped_(false),
     nCells_(Zero),
     cellWidth_(Zero),
     span_(domain.span()),
-    anyPeriodic_(periodic[0] || periodic[1] || periodic[2])
+    anyPeriodic_(periodic[0] || periodic[1] || periodic[2]),
+    anyUnwrapped_(false)
+{
+    layCells(minCellWidth);
+}
+
+
+Foam::linkedCells::linkedCells
+(
+    const boundBox& domain,
+    const FixedList<bool, 3>& periodic,
+    const scalar minCellWidth,
+    const boundBox& region
+)
+:
+    domain_(domain),
+    periodic_(periodic),
+    unwrapped_(false),
+    nCells_(Zero),
+    cellWidth_(Zero),
+    span_(domain.span()),
+    anyPeriodic_(periodic[0] || periodic[1] || periodic[2]),
+    anyUnwrapped_(false)
+{
+    point lo = domain.min(), hi = domain.max();
+    for (direction d = 0; d < 3; ++d)
+    {
+        const scalar width = region.max()[d] - region.min()[d];
+        if (periodic[d])
+        {
+            // Half a period at most: no image of a centre within the
+            // region's reach can be binned at the region's other end
+            if (width < 0.5*span_[d])
+            {
+                periodic_[d] = false;
+                unwrapped_[d] = true;
+                anyUnwrapped_ = true;
+                lo[d] = region.min()[d];
+                hi[d] = region.max()[d];
+            }
+        }
+        else
+        {
+            // (centres beyond the domain's walls go to the edge cells)
+            lo[d] = max(region.min()[d], domain.min()[d]);
+            hi[d] = min(region.max()[d], domain.max()[d]);
+            if (!(hi[d] > lo[d]))
+            {
+                FatalErrorInFunction
+                    << "region " << region << " lies outside the domain "
+                    << domain << " along direction " << label(d)
+                    << exit(FatalError);
+            }
+        }
+    }
+    domain_ = boundBox(lo, hi);
+    layCells(minCellWidth);
+}
+
+
+void Foam::linkedCells::layCells(const scalar minCellWidth)
 {
     if (!(minCellWidth > 0))
     {
@@ -90,7 +151,14 @@ Foam::labelVector Foam::linkedCells::cellOf(const point& p) const
     labelVector ijk;
     for (direction d = 0; d < 3; ++d)
     {
-        const scalar s = (p[d] - domain_.min()[d])/cellWidth_[d];
+        scalar x = p[d];
+        if (anyUnwrapped_ && unwrapped_[d])
+        {
+            // The image nearest the region's centre
+            const scalar c = 0.5*(domain_.min()[d] + domain_.max()[d]);
+            x -= span_[d]*std::round((x - c)/span_[d]);
+        }
+        const scalar s = (x - domain_.min()[d])/cellWidth_[d];
         label c = label(std::floor(s));
         if (periodic_[d])
         {

@@ -36,7 +36,8 @@ void Foam::verletList::reset
     const FixedList<bool, 3>& periodic,
     const label n,
     const scalar rMax,
-    const scalar Dmin
+    const scalar Dmin,
+    const boundBox* region
 )
 {
     if (skin_ < 0 && n)
@@ -48,7 +49,12 @@ void Foam::verletList::reset
         2*rMax + max(skin_, scalar(0)),
         std::cbrt(domain.volume()/max(n, label(1)))
     );
-    cells_.reset(new linkedCells(domain, periodic, cellWidth));
+    cells_.reset
+    (
+        region
+      ? new linkedCells(domain, periodic, cellWidth, *region)
+      : new linkedCells(domain, periodic, cellWidth)
+    );
     cellWidth_ = cellWidth;
     rMax_ = rMax;
     xAtBuild_.clear();

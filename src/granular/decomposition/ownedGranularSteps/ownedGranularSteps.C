@@ -170,11 +170,18 @@ Foam::ownedGranularSteps::ownedGranularSteps
             }
         }
     }
+    // Each rank's own particles, their centres in its box: the contact
+    // search over the box until the ghosts come
+    searchRegions_.setSize(systems_.size());
     forAll(systems_, k)
     {
         granularSystem& s = systems_[k];
+        searchRegions_[k] = decomposition_.bounds(exchange_.localRanks()[k]);
         s.setScene(s.localConstants());
-        s.setParticles(owned[k], boolList(owned[k].size(), false));
+        s.setParticles
+        (
+            owned[k], boolList(owned[k].size(), false), &searchRegions_[k]
+        );
     }
 
     // The scene's constants: exact reductions of the ranks' own
@@ -386,6 +393,12 @@ Foam::label Foam::ownedGranularSteps::evolve(const scalar Deltat)
     counters_.maxRankMessages = label(exchange_.maxOf(msgs));
     counters_.maxRankBytes = exchange_.maxOf(bytes);
     counters_.maxNeighbours = label(exchange_.maxOf(nbrs));
+    counters_.maxHeld =
+        label(exchange_.maxOf(scalarList(1, scalar(counters_.maxHeld))));
+    counters_.maxSearchCells = label
+    (
+        exchange_.maxOf(scalarList(1, scalar(counters_.maxSearchCells)))
+    );
     return n;
 }
 

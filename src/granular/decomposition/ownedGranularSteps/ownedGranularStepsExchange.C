@@ -93,6 +93,19 @@ void Foam::ownedGranularSteps::distributeGhosts(const scalar travel)
     const scalar reachBeyond = scene_.rMax + skinOf() + 2*travel;
     setNeighbours(2*scene_.rMax + skinOf() + 2*travel);
 
+    // Each rank's contact search covers its box and the ghosts' reach,
+    // with their travel over the step: no grid over the whole domain
+    searchRegions_.setSize(systems_.size());
+    forAll(systems_, k)
+    {
+        const boundBox box
+        (
+            decomposition_.bounds(exchange_.localRanks()[k])
+        );
+        const vector grow(vector::one*(scene_.rMax + reachBeyond + travel));
+        searchRegions_[k] = boundBox(box.min() - grow, box.max() + grow);
+    }
+
     using record = granularSystem::particleRecord;
 
     forAll(systems_, k)
@@ -188,7 +201,10 @@ void Foam::ownedGranularSteps::distributeGhosts(const scalar travel)
                     << globals[n] << ") twice" << abort(FatalError);
             }
         }
-        s.setParticles(sorted, isGhost);
+        s.setParticles(sorted, isGhost, &searchRegions_[k]);
+        counters_.maxHeld = max(counters_.maxHeld, s.size());
+        counters_.maxSearchCells =
+            max(counters_.maxSearchCells, s.nSearchCells());
 
         // Where each ghost and each particle sent now sits
         forAll(order, n)
@@ -373,7 +389,7 @@ void Foam::ownedGranularSteps::dropGhostsAndMigrate()
         {
             sorted[n] = kept[k][globals.indices()[n]];
         }
-        s.setParticles(sorted, boolList(sorted.size(), false));
+        s.setParticles(sorted, boolList(sorted.size(), false), &searchRegions_[k]);
         for (const historyEntry& h : histories)
         {
             s.history().set(h.i, h.j, h.h);
