@@ -236,7 +236,10 @@ int main(int argc, char *argv[])
         phases.append("mesh");
         seconds.append(meshSeconds);
     }
-    Info<< costLine::text(phases, seconds).c_str() << nl << endl;
+    // (owned mode: the load imbalance of the granular step after it)
+    const string note = particles.valid() ? particles->costLineNote() : "";
+    Info<< costLine::text(phases, seconds).c_str() << note.c_str() << nl
+        << endl;
     if (particles.valid())
     {
         particles->reportExchange();

@@ -583,6 +583,21 @@ void Foam::dlmfdCoupling::writeVTK()
 }
 
 
+Foam::string Foam::dlmfdCoupling::costLineNote() const
+{
+    if (!seriesPerRank())
+    {
+        return string();
+    }
+    const Pair<scalar> work = owned_->workPerRank();
+    return
+        "; granular work per rank (less its exchanges) max/mean "
+      + Foam::name(work.first()/max(work.second(), VSMALL))
+      + " (max " + Foam::name(work.first()) + " s, mean "
+      + Foam::name(work.second()) + " s)";
+}
+
+
 void Foam::dlmfdCoupling::reportExchange() const
 {
     if (!Pstream::parRun())

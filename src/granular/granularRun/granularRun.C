@@ -352,6 +352,7 @@ void Foam::granularRun::run()
 
     if (owned_ && nOwnedSteps_)
     {
+        const Pair<scalar> work = owned_->workPerRank();
         const scalar perStep = 1.0/nOwnedSteps_;
         Info<< nl << "Owned particles, per step over " << nOwnedSteps_
             << " steps: the busiest rank sent "
@@ -365,7 +366,11 @@ void Foam::granularRun::run()
             << " records beyond reach; at most " << ownedTotals_.maxHeld
             << " particles held by a rank (of " << nParticles_ << "), its"
             << " contact search over at most " << ownedTotals_.maxSearchCells
-            << " cells" << endl;
+            << " cells" << nl
+            << "Granular work per rank (less its exchanges and waiting):"
+            << " max/mean " << work.first()/max(work.second(), VSMALL)
+            << " (max " << work.first() << " s, mean " << work.second()
+            << " s)" << endl;
     }
 }
 

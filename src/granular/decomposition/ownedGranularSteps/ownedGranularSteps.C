@@ -14,6 +14,8 @@ License
 #include "ownedGranularSteps.H"
 #include "velocityVerletIntegrator.H"
 
+#include <chrono>
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class Type, class Op>
@@ -123,7 +125,11 @@ Foam::ownedGranularSteps::ownedGranularSteps
     messages_(systems_.size()),
     sendTo_(systems_.size()),
     receiveFrom_(systems_.size()),
-    counters_()
+    counters_(),
+    rankMessages_(),
+    rankBytes_(),
+    searchRegions_(),
+    workSeconds_(0)
 {
     if (systems_.size() != exchange_.localRanks().size())
     {
@@ -223,6 +229,36 @@ Foam::ownedGranularSteps::ownedGranularSteps
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::label Foam::ownedGranularSteps::evolve(const scalar Deltat)
+{
+    const scalar exchanged = exchange_.seconds();
+    const auto start = std::chrono::steady_clock::now();
+    const label n = step(Deltat);
+    workSeconds_ +=
+        std::chrono::duration<scalar>
+        (
+            std::chrono::steady_clock::now() - start
+        ).count()
+      - (exchange_.seconds() - exchanged);
+    return n;
+}
+
+
+Foam::Pair<Foam::scalar> Foam::ownedGranularSteps::workPerRank() const
+{
+    // (ranks in one process share its clock: each its share)
+    const scalarList perRank
+    (
+        systems_.size(), workSeconds_/max(systems_.size(), label(1))
+    );
+    return Pair<scalar>
+    (
+        exchange_.maxOf(perRank),
+        exchange_.sumOf(perRank)/exchange_.nRanks()
+    );
+}
+
+
+Foam::label Foam::ownedGranularSteps::step(const scalar Deltat)
 {
     counters_ = counters();
     rankMessages_.setSize(systems_.size());

@@ -17,11 +17,42 @@ License
 #include "UIPstream.H"
 #include "UOPstream.H"
 
+#include <chrono>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+    //- Adds the wall-clock time of its scope to a sum
+    class timed
+    {
+        Foam::scalar& sum_;
+        const std::chrono::steady_clock::time_point start_;
+
+    public:
+
+        explicit timed(Foam::scalar& sum)
+        :
+            sum_(sum),
+            start_(std::chrono::steady_clock::now())
+        {}
+
+        ~timed()
+        {
+            sum_ += std::chrono::duration<Foam::scalar>
+            (
+                std::chrono::steady_clock::now() - start_
+            ).count();
+        }
+    };
+}
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::pstreamRankExchange::pstreamRankExchange()
 :
-    ranks_(1, Pstream::myProcNo())
+    ranks_(1, Pstream::myProcNo()),
+    seconds_(0)
 {}
 
 
@@ -35,6 +66,7 @@ Foam::label Foam::pstreamRankExchange::nRanks() const
 
 void Foam::pstreamRankExchange::exchange(UList<messages>& perRank) const
 {
+    const timed clock(seconds_);
     if (perRank.size() != 1)
     {
         FatalErrorInFunction
@@ -106,6 +138,7 @@ Foam::List<Foam::List<char>> Foam::pstreamRankExchange::gather
     const UList<DynamicList<char>>& perRank
 ) const
 {
+    const timed clock(seconds_);
     List<List<char>> all(Pstream::nProcs());
     all[Pstream::myProcNo()] = perRank[0];
     Pstream::gatherList(all);
@@ -119,6 +152,7 @@ Foam::List<Foam::List<char>> Foam::pstreamRankExchange::gather
 
 bool Foam::pstreamRankExchange::anyOf(const UList<bool>& perRank) const
 {
+    const timed clock(seconds_);
     bool any = false;
     for (const bool b : perRank)
     {
@@ -133,6 +167,7 @@ Foam::scalar Foam::pstreamRankExchange::maxOf
     const UList<scalar>& perRank
 ) const
 {
+    const timed clock(seconds_);
     scalar m = -VGREAT;
     for (const scalar s : perRank)
     {
@@ -144,6 +179,7 @@ Foam::scalar Foam::pstreamRankExchange::maxOf
 
 Foam::label Foam::pstreamRankExchange::sumOf(const labelUList& perRank) const
 {
+    const timed clock(seconds_);
     label n = 0;
     for (const label v : perRank)
     {
@@ -158,6 +194,7 @@ Foam::scalar Foam::pstreamRankExchange::sumOf
     const UList<scalar>& perRank
 ) const
 {
+    const timed clock(seconds_);
     scalar sum = 0;
     for (const scalar v : perRank)
     {
@@ -172,6 +209,7 @@ Foam::List<Foam::List<char>> Foam::pstreamRankExchange::allGather
     const UList<DynamicList<char>>& perRank
 ) const
 {
+    const timed clock(seconds_);
     List<List<char>> all(Pstream::nProcs());
     all[Pstream::myProcNo()] = perRank[0];
     Pstream::gatherList(all);
