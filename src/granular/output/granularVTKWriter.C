@@ -66,6 +66,23 @@ namespace
         os  << "</DataArray>\n";
     }
 
+    //- Times in a series file are written at 12 digits
+    scalar timeTolerance(const scalar t)
+    {
+        return 1e-10*max(scalar(1), mag(t));
+    }
+
+    //- Drop the entries at time t and after (a write at t replaces them)
+    void dropFrom(List<Tuple2<word, scalar>>& entries, const scalar t)
+    {
+        label n = 0;
+        while (n < entries.size() && entries[n].second() < t - timeTolerance(t))
+        {
+            ++n;
+        }
+        entries.setSize(n);
+    }
+
     //- Write to a temporary file, then rename: no half-written file
     void commit(const fileName& tmp, const fileName& file)
     {
@@ -157,7 +174,9 @@ Foam::granularVTKWriter::readSeries(const fileName& file, const scalar t)
         const auto q2 = line.find('"', q1 + 1);
         const std::string name = line.substr(q1 + 1, q2 - q1 - 1);
         const scalar time = std::stod(line.substr(line.find(':', t0) + 1));
-        if (time < t)
+        // (the start time's own output kept: a restart does not write it
+        // again; a write at a time already listed replaces its entry)
+        if (time <= t + timeTolerance(t))
         {
             entries.append(Tuple2<word, scalar>(word(name), time));
         }
@@ -399,6 +418,8 @@ void Foam::granularVTKWriter::write
     const word sphereName("spheres_" + Foam::name(index) + ".vtp");
     writeParticles(system, false, dir_/polyName, dir_/sphereName);
 
+    dropFrom(polyhedra_, t);
+    dropFrom(spheres_, t);
     polyhedra_.append(Tuple2<word, scalar>(polyName, t));
     spheres_.append(Tuple2<word, scalar>(sphereName, t));
     writeSeries(dir_/"polyhedra.vtp.series", polyhedra_);
@@ -441,6 +462,8 @@ void Foam::granularVTKWriter::writePieces
         dir_/sphereName, pieceDir.name(), "spheres", "PPointData", "diameter",
         sphereArrays
     );
+    dropFrom(polyhedraPieces_, t);
+    dropFrom(spherePieces_, t);
     polyhedraPieces_.append(Tuple2<word, scalar>(polyName, t));
     spherePieces_.append(Tuple2<word, scalar>(sphereName, t));
     writeSeries(dir_/"polyhedra.pvtp.series", polyhedraPieces_);
