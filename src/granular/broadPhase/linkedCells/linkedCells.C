@@ -25,17 +25,9 @@ Foam::linkedCells::linkedCells
     const scalar minCellWidth
 )
 :
-    domain_(domain),
-    periodic_(periodic),
-    unwrapped_(false),
-    nCells_(Zero),
-    cellWidth_(Zero),
-    span_(domain.span()),
-    anyPeriodic_(periodic[0] || periodic[1] || periodic[2]),
-    anyUnwrapped_(false)
-{
-    layCells(minCellWidth);
-}
+    // The region the whole domain: every periodic direction wraps
+    linkedCells(domain, periodic, minCellWidth, domain)
+{}
 
 
 Foam::linkedCells::linkedCells
