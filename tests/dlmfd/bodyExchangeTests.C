@@ -62,7 +62,10 @@ TEST(bodyExchange, serialContributionsArriveAsSentWithoutAMessage)
     List<bodyExchange::result> results(2);
     results[1].dV = vector(1, 2, 3);
     results[1].nInterior = 7;
-    bodyExchange::gatherResults(labelList({1}), results, seconds, received);
+    bodyExchange::sendResults
+    (
+        labelList({1}), labelList({0}), results, seconds, received
+    );
     EXPECT_EQ(results[1].dV, vector(1, 2, 3));
     EXPECT_EQ(results[1].nInterior, 7);
     EXPECT_EQ(results[0].dV, vector::zero);

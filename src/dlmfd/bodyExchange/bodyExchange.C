@@ -197,9 +197,10 @@ Foam::labelList Foam::bodyExchange::solvingRanks
 }
 
 
-void Foam::bodyExchange::gatherResults
+void Foam::bodyExchange::sendResults
 (
     const labelUList& solved,
+    const labelUList& destination,
     List<result>& results,
     scalar& commSeconds,
     exchangeTraffic& received
@@ -211,13 +212,29 @@ void Foam::bodyExchange::gatherResults
     }
     clockTime clock;
     constexpr label nValues = 17;
-    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
-    if (!Pstream::master() && solved.size())
+    const label nProcs = Pstream::nProcs();
+    const label self = Pstream::myProcNo();
+
+    // Each destination's bodies, in the ascending order they were solved
+    List<DynamicList<label>> to(nProcs);
+    forAll(solved, k)
     {
-        scalarList values(nValues*solved.size());
-        forAll(solved, k)
+        if (destination[k] != self)
         {
-            const result& r = results[solved[k]];
+            to[destination[k]].append(solved[k]);
+        }
+    }
+    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
+    forAll(to, q)
+    {
+        if (to[q].empty())
+        {
+            continue;
+        }
+        scalarList values(nValues*to[q].size());
+        forAll(to[q], k)
+        {
+            const result& r = results[to[q][k]];
             scalar* v = &values[nValues*k];
             for (direction d = 0; d < vector::nComponents; ++d)
             {
@@ -232,41 +249,38 @@ void Foam::bodyExchange::gatherResults
             v[15] = r.iterations;
             v[16] = r.constraintError;
         }
-        UOPstream os(Pstream::masterNo(), buffers);
-        os << labelList(solved) << values;
+        UOPstream os(q, buffers);
+        os << labelList(to[q]) << values;
     }
     labelList recvSizes;
     buffers.finishedSends(recvSizes);
-    received.add(recvSizes, Pstream::myProcNo());
-    if (Pstream::master())
+    received.add(recvSizes, self);
+    for (label q = 0; q < nProcs; ++q)
     {
-        for (label q = 1; q < Pstream::nProcs(); ++q)
+        if (q == self || recvSizes[q] == 0)
         {
-            if (recvSizes[q] == 0)
+            continue;
+        }
+        UIPstream is(q, buffers);
+        labelList bodies;
+        scalarList values;
+        is >> bodies >> values;
+        forAll(bodies, k)
+        {
+            result& r = results[bodies[k]];
+            const scalar* v = &values[nValues*k];
+            for (direction d = 0; d < vector::nComponents; ++d)
             {
-                continue;
+                r.dV[d] = v[d];
+                r.dOmega[d] = v[3 + d];
+                r.sumLambda[d] = v[6 + d];
+                r.sumMoment[d] = v[9 + d];
             }
-            UIPstream is(q, buffers);
-            labelList bodies;
-            scalarList values;
-            is >> bodies >> values;
-            forAll(bodies, k)
-            {
-                result& r = results[bodies[k]];
-                const scalar* v = &values[nValues*k];
-                for (direction d = 0; d < vector::nComponents; ++d)
-                {
-                    r.dV[d] = v[d];
-                    r.dOmega[d] = v[3 + d];
-                    r.sumLambda[d] = v[6 + d];
-                    r.sumMoment[d] = v[9 + d];
-                }
-                r.nInterior = label(v[12]);
-                r.nSurface = label(v[13]);
-                r.nSurfaceDropped = label(v[14]);
-                r.iterations = label(v[15]);
-                r.constraintError = v[16];
-            }
+            r.nInterior = label(v[12]);
+            r.nSurface = label(v[13]);
+            r.nSurfaceDropped = label(v[14]);
+            r.iterations = label(v[15]);
+            r.constraintError = v[16];
         }
     }
     commSeconds += clock.elapsedTime();

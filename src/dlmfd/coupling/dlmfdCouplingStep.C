@@ -20,6 +20,7 @@ Description
 #include "Time.H"
 #include "fvmDdt.H"
 #include "linear.H"
+#include "PstreamBuffers.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -44,6 +45,9 @@ Foam::List<Foam::fictitiousDomain::body> Foam::dlmfdCoupling::predictedBodies
         omega0[i] = p.omega();
         b.shape = &p.shape();
         b.index = granular_.globalIndex(i);
+        // With owned particles the owner takes the body's result (the
+        // box its centre is in, as the granular step's migration decides)
+        b.resultRank = owned_ ? boxes_->rankOf(p.position()) : 0;
         b.R = p.R();
         b.free = p.motion() == motionKind::free;
         b.rotates = p.rotates();
@@ -275,20 +279,26 @@ void Foam::dlmfdCoupling::correct(volVectorField& U)
     commSeconds_ += fdComm;
 
     // How far the particles' velocities moved since the last corrector:
-    // what the outer loop has left to converge (on the master)
+    // what the outer loop has left to converge (on the rank that takes
+    // each body's result)
     scalar change = 0;
-    if (Pstream::master())
+    lastV_.setSize(res.size(), vector::max);
+    forAll(res, i)
     {
-        lastV_.setSize(res.size(), vector::max);
-        forAll(res, i)
+        if (bodies[i].resultRank != Pstream::myProcNo())
         {
-            const vector V = bodies[i].V + res[i].dV;
-            if (nCorrections_ > 1)
-            {
-                change = max(change, mag(V - lastV_[i]));
-            }
-            lastV_[i] = V;
+            continue;
         }
+        const vector V = bodies[i].V + res[i].dV;
+        if (nCorrections_ > 1)
+        {
+            change = max(change, mag(V - lastV_[i]));
+        }
+        lastV_[i] = V;
+    }
+    if (owned_)
+    {
+        reduce(change, maxOp<scalar>());
     }
 
     Info<< "DLM/FD outer corrector " << nCorrections_ << ": ";
@@ -312,14 +322,23 @@ Foam::label Foam::dlmfdCoupling::evolveOwned
     List<vector>& omega3
 )
 {
-    // The new velocities from the master, each set on its owner's part by
-    // the same calls the master makes in the master-side step
-    Pstream::scatter(V3);
-    Pstream::scatter(omega3);
+    // The new velocities, which this rank took as the owner, set on its
+    // part by the same calls the master makes in the master-side step
+    // (the part holds its own particles only: the last step dropped the
+    // ghosts)
     granularSystem& part = *part_;
     for (label i = 0; i < part.size(); ++i)
     {
         const label g = part.globalIndex(i);
+        if (bodies[g].resultRank != Pstream::myProcNo())
+        {
+            FatalErrorInFunction
+                << "Particle " << granular_.id(g) << " (global index " << g
+                << ") is owned by rank " << Pstream::myProcNo()
+                << " but its centre " << part.particle(i).position()
+                << " lies in rank " << bodies[g].resultRank << "'s box"
+                << exit(FatalError);
+        }
         if (bodies[g].free)
         {
             rigidParticle& p = part.particle(i);
@@ -409,18 +428,27 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
     fdSeconds_ += clock.timeIncrement() - fdComm;
     commSeconds_ += fdComm;
 
-    // (4) On the master: forces, torques and the granular corrector,
-    // contacts from X^n over dt
+    // (4) On the master, or with owned particles on each body's owner:
+    // forces, torques and the granular corrector, contacts from X^n over
+    // dt
     label nPoints = 0, nSurface = 0, nDropped = 0, maxIter = 0, nSub = 0;
     scalar maxError = 0;
     const bool corrected = correctedIndex_ == mesh_.time().timeIndex();
     scalar lastChange = 0;
     List<vector> V3s, omega3s;
-    if (Pstream::master())
+    if (owned_)
+    {
+        V3s.setSize(n);
+        omega3s.setSize(n);
+    }
     {
         for (label i = 0; i < n; ++i)
         {
             const fictitiousDomain::body& b = bodies[i];
+            if (b.resultRank != Pstream::myProcNo())
+            {
+                continue;
+            }
             const fictitiousDomain::result& r = res[i];
             nPoints += r.nInterior + r.nSurface;
             nSurface += r.nSurface;
@@ -442,9 +470,7 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
 
             if (owned_)
             {
-                // (their owners take them: evolveOwned)
-                V3s.setSize(n);
-                omega3s.setSize(n);
+                // (set on this owner's part: evolveOwned)
                 V3s[i] = V3;
                 omega3s[i] = omega3;
             }
@@ -455,7 +481,7 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
                 p.setOmega(omega3);
             }
         }
-        if (!owned_)
+        if (!owned_ && Pstream::master())
         {
             nSub = granular_.evolve(dt);
             granular_.checkHealth(mesh_.time().value());
@@ -463,6 +489,14 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
     }
     if (owned_)
     {
+        // The log's sums and extremes over the owners (integers and
+        // maxima: the master-side step's numbers exactly)
+        reduce(nPoints, sumOp<label>());
+        reduce(nSurface, sumOp<label>());
+        reduce(nDropped, sumOp<label>());
+        reduce(maxIter, maxOp<label>());
+        reduce(maxError, maxOp<scalar>());
+        reduce(lastChange, maxOp<scalar>());
         nSub = evolveOwned(bodies, V3s, omega3s);
         granularSeconds_ += clock.timeIncrement();
     }
@@ -543,21 +577,77 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
 
     if (mesh_.time().timeIndex() % seriesInterval_ == 0)
     {
+        if (seriesPerRank())
+        {
+            handOverForces(bodies);
+        }
         writeSeriesRows();
     }
     seriesSeconds_ += clock.timeIncrement();
 }
 
 
+void Foam::dlmfdCoupling::handOverForces
+(
+    const List<fictitiousDomain::body>& bodies
+)
+{
+    // A particle whose centre crossed into another box in the granular
+    // step has a new owner, which writes its row: the forces go there from
+    // the rank that took its result
+    const label self = Pstream::myProcNo();
+    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
+    List<DynamicList<label>> moved(Pstream::nProcs());
+    forAll(bodies, i)
+    {
+        if (bodies[i].resultRank == self)
+        {
+            const label owner =
+                boxes_->rankOf(granular_.particle(i).position());
+            if (owner != self)
+            {
+                moved[owner].append(i);
+            }
+        }
+    }
+    forAll(moved, q)
+    {
+        if (moved[q].size())
+        {
+            List<vector> forces(2*moved[q].size());
+            forAll(moved[q], k)
+            {
+                forces[2*k] = Fh_[moved[q][k]];
+                forces[2*k + 1] = Th_[moved[q][k]];
+            }
+            UOPstream os(q, buffers);
+            os << labelList(moved[q]) << forces;
+        }
+    }
+    labelList recvSizes;
+    buffers.finishedSends(recvSizes);
+    forAll(recvSizes, q)
+    {
+        if (q != self && recvSizes[q] > 0)
+        {
+            UIPstream is(q, buffers);
+            labelList particles;
+            List<vector> forces;
+            is >> particles >> forces;
+            forAll(particles, k)
+            {
+                Fh_[particles[k]] = forces[2*k];
+                Th_[particles[k]] = forces[2*k + 1];
+            }
+        }
+    }
+}
+
+
 void Foam::dlmfdCoupling::writeSeriesRows()
 {
-    if (seriesPerRank())
-    {
-        // The hydrodynamic forces are the master's: each owner writes its
-        // particles' rows
-        Pstream::scatter(Fh_);
-        Pstream::scatter(Th_);
-    }
+    // (with owned particles each owner has its particles' hydrodynamic
+    // forces, and writes their rows)
     if (!series_.valid())
     {
         return;

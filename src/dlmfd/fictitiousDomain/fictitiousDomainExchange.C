@@ -422,9 +422,14 @@ Foam::fictitiousDomain::solve
     }
 
     received_.bodiesSolved += solved.size();
-    bodyExchange::gatherResults
+    labelList destination(solved.size());
+    forAll(solved, k)
+    {
+        destination[k] = bodies[solved[k]].resultRank;
+    }
+    bodyExchange::sendResults
     (
-        solved, results_, commSeconds_, received_
+        solved, destination, results_, commSeconds_, received_
     );
     ++nSolves_;
 
