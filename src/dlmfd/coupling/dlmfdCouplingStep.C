@@ -441,62 +441,65 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
         V3s.setSize(n);
         omega3s.setSize(n);
     }
+    for (label i = 0; i < n; ++i)
     {
-        for (label i = 0; i < n; ++i)
+        const fictitiousDomain::body& b = bodies[i];
+        if (b.resultRank != Pstream::myProcNo())
         {
-            const fictitiousDomain::body& b = bodies[i];
-            if (b.resultRank != Pstream::myProcNo())
-            {
-                continue;
-            }
-            const fictitiousDomain::result& r = res[i];
-            nPoints += r.nInterior + r.nSurface;
-            nSurface += r.nSurface;
-            nDropped += r.nSurfaceDropped;
-            maxIter = max(maxIter, r.iterations);
-            maxError = max(maxError, r.constraintError);
-
-            const vector V3 = b.V + r.dV;
-            const vector omega3 = b.omega + r.dOmega;
-            if (corrected)
-            {
-                lastChange = max(lastChange, mag(V3 - lastV_[i]));
-            }
-            const scalar vp = b.shape->volume();
-            Fh_[i] = rhoFluid_*(vp*(V3 - V0[i])/dt - r.sumLambda);
-            Th_[i] =
-                rhoFluid_
-               *((volumeInertia(i) & (omega3 - omega0[i]))/dt - r.sumMoment);
-
-            if (owned_)
-            {
-                // (set on this owner's part: evolveOwned)
-                V3s[i] = V3;
-                omega3s[i] = omega3;
-            }
-            else if (b.free)
-            {
-                rigidParticle& p = granular_.particle(i);
-                p.setVelocity(V3);
-                p.setOmega(omega3);
-            }
+            continue;
         }
-        if (!owned_ && Pstream::master())
+        const fictitiousDomain::result& r = res[i];
+        nPoints += r.nInterior + r.nSurface;
+        nSurface += r.nSurface;
+        nDropped += r.nSurfaceDropped;
+        maxIter = max(maxIter, r.iterations);
+        maxError = max(maxError, r.constraintError);
+
+        const vector V3 = b.V + r.dV;
+        const vector omega3 = b.omega + r.dOmega;
+        if (corrected)
         {
-            nSub = granular_.evolve(dt);
-            granular_.checkHealth(mesh_.time().value());
+            lastChange = max(lastChange, mag(V3 - lastV_[i]));
         }
+        const scalar vp = b.shape->volume();
+        Fh_[i] = rhoFluid_*(vp*(V3 - V0[i])/dt - r.sumLambda);
+        Th_[i] =
+            rhoFluid_
+           *((volumeInertia(i) & (omega3 - omega0[i]))/dt - r.sumMoment);
+
+        if (owned_)
+        {
+            // (set on this owner's part: evolveOwned)
+            V3s[i] = V3;
+            omega3s[i] = omega3;
+        }
+        else if (b.free)
+        {
+            rigidParticle& p = granular_.particle(i);
+            p.setVelocity(V3);
+            p.setOmega(omega3);
+        }
+    }
+    if (!owned_ && Pstream::master())
+    {
+        nSub = granular_.evolve(dt);
+        granular_.checkHealth(mesh_.time().value());
     }
     if (owned_)
     {
-        // The log's sums and extremes over the owners (integers and
-        // maxima: the master-side step's numbers exactly)
-        reduce(nPoints, sumOp<label>());
-        reduce(nSurface, sumOp<label>());
-        reduce(nDropped, sumOp<label>());
-        reduce(maxIter, maxOp<label>());
-        reduce(maxError, maxOp<scalar>());
-        reduce(lastChange, maxOp<scalar>());
+        // The log's sums and extremes over the owners, on the master that
+        // prints them (integers and maxima: the master-side step's numbers
+        // exactly)
+        labelList counts({nPoints, nSurface, nDropped});
+        Pstream::listCombineGather(counts, plusEqOp<label>());
+        scalarList extremes({scalar(maxIter), maxError, lastChange});
+        Pstream::listCombineGather(extremes, maxEqOp<scalar>());
+        nPoints = counts[0];
+        nSurface = counts[1];
+        nDropped = counts[2];
+        maxIter = label(extremes[0]);
+        maxError = extremes[1];
+        lastChange = extremes[2];
         nSub = evolveOwned(bodies, V3s, omega3s);
         granularSeconds_ += clock.timeIncrement();
     }
