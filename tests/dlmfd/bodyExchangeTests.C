@@ -64,7 +64,8 @@ TEST(bodyExchange, serialContributionsArriveAsSentWithoutAMessage)
     results[1].nInterior = 7;
     bodyExchange::sendResults
     (
-        labelList({1}), labelList({0}), results, seconds, received
+        labelList({1}), labelList({1}), labelList({0}), bodyPlaces(), results,
+        seconds, received
     );
     EXPECT_EQ(results[1].dV, vector(1, 2, 3));
     EXPECT_EQ(results[1].nInterior, 7);

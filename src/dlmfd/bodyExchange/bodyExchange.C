@@ -200,7 +200,9 @@ Foam::labelList Foam::bodyExchange::solvingRanks
 void Foam::bodyExchange::sendResults
 (
     const labelUList& solved,
+    const labelUList& solvedGlobal,
     const labelUList& destination,
+    const bodyPlaces& places,
     List<result>& results,
     scalar& commSeconds,
     exchangeTraffic& received
@@ -215,13 +217,15 @@ void Foam::bodyExchange::sendResults
     const label nProcs = Pstream::nProcs();
     const label self = Pstream::myProcNo();
 
-    // Each destination's bodies, in the ascending order they were solved
-    List<DynamicList<label>> to(nProcs);
+    // Each destination's bodies (places here, and global indices), in the
+    // ascending order they were solved
+    List<DynamicList<label>> to(nProcs), toGlobal(nProcs);
     forAll(solved, k)
     {
         if (destination[k] != self)
         {
             to[destination[k]].append(solved[k]);
+            toGlobal[destination[k]].append(solvedGlobal[k]);
         }
     }
     PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
@@ -250,7 +254,7 @@ void Foam::bodyExchange::sendResults
             v[16] = r.constraintError;
         }
         UOPstream os(q, buffers);
-        os << labelList(to[q]) << values;
+        os << labelList(toGlobal[q]) << values;
     }
     labelList recvSizes;
     buffers.finishedSends(recvSizes);
@@ -267,7 +271,15 @@ void Foam::bodyExchange::sendResults
         is >> bodies >> values;
         forAll(bodies, k)
         {
-            result& r = results[bodies[k]];
+            const label b = places(bodies[k]);
+            if (b < 0)
+            {
+                FatalErrorInFunction
+                    << "rank " << q << " sent the result of particle "
+                    << bodies[k] << " (global index) to rank " << self
+                    << ", which does not hold it" << exit(FatalError);
+            }
+            result& r = results[b];
             const scalar* v = &values[nValues*k];
             for (direction d = 0; d < vector::nComponents; ++d)
             {

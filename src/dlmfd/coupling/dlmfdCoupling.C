@@ -171,6 +171,18 @@ Foam::fileName Foam::dlmfdCoupling::readParticles(granularSystem& into)
 
 void Foam::dlmfdCoupling::setOwned(const sceneEffects& effects)
 {
+    if (penalty_.on())
+    {
+        // The penalty gives every cell to its nearest body, of the whole
+        // scene; with owned particles a rank holds those near its cells
+        FatalErrorInFunction
+            << "constant/dlmfdProperties: fictitiousDomain/fluidStepForce"
+            << " penalty needs every particle on every rank, and"
+            << " constant/collisionProperties selects particleDistribution"
+            << " owned. Use fluidStepForce multipliers (the default) or"
+            << " particleDistribution master" << exit(FatalError);
+    }
+
     // The boxes: the factors of the number of ranks that cut the domain
     // with the least area between boxes (one box along a direction that
     // is one cell deep: a 2D case)
@@ -219,6 +231,9 @@ void Foam::dlmfdCoupling::setOwned(const sceneEffects& effects)
     UPtrList<granularSystem> parts(1);
     parts.set(0, part_.get());
     owned_.reset(new ownedGranularSteps(std::move(parts), *boxes_, exchange_));
+    // Each rank's fictitious domain takes the bodies near its cells and
+    // its own
+    fd_.setBodiesPerRank();
     Info<< "Particle distribution: owned, " << n.x() << " x " << n.y()
         << " x " << n.z() << " boxes of the collision domain; each rank"
         << " moves the particles in its box" << nl;
@@ -616,6 +631,7 @@ void Foam::dlmfdCoupling::reportExchange() const
             << returnReduce(perSolve, maxOp<scalar>()) << ", "
             << returnReduce(perSolve, sumOp<scalar>())/nProcs << nl;
     };
+    line("bodies in the list   ", t.bodiesListed);
     line("bodies with cells here", t.bodiesHere);
     line("their cells          ", t.cellsHere);
     line("bodies solved        ", t.bodiesSolved);

@@ -23,28 +23,17 @@ Description
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::dlmfdCoupling::handOverForces
-(
-    const List<fictitiousDomain::body>& bodies
-)
+void Foam::dlmfdCoupling::handOverForces()
 {
     // A particle whose centre crossed into another box in the granular
     // step has a new owner, which writes its row: the forces go there from
-    // the rank that took its result
+    // the rank that took its result (its owner at the step's start)
     const label self = Pstream::myProcNo();
     PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
     List<DynamicList<label>> moved(Pstream::nProcs());
-    forAll(bodies, i)
+    for (const labelPair& gr : owned_->lastDepartures()[0])
     {
-        if (bodies[i].resultRank == self)
-        {
-            const label owner =
-                boxes_->rankOf(granular_.particle(i).position());
-            if (owner != self)
-            {
-                moved[owner].append(i);
-            }
-        }
+        moved[gr.second()].append(gr.first());
     }
     forAll(moved, q)
     {

@@ -80,6 +80,125 @@ Foam::List<Foam::fictitiousDomain::body> Foam::dlmfdCoupling::predictedBodies
 }
 
 
+const Foam::UList<Foam::fictitiousDomain::body>&
+Foam::dlmfdCoupling::bodiesHeld
+(
+    const List<fictitiousDomain::body>& bodies,
+    List<fictitiousDomain::body>& held
+) const
+{
+    if (!owned_)
+    {
+        return bodies;
+    }
+    // Among the particles whose state is the last step's (the others'
+    // states in the mirror are older: they were sent to this rank by no
+    // one), in ascending global index
+    DynamicList<fictitiousDomain::body> near;
+    if (allFresh_)
+    {
+        for (const fictitiousDomain::body& b : bodies)
+        {
+            if (fd_.holds(b))
+            {
+                near.append(b);
+            }
+        }
+    }
+    else
+    {
+        for (const label g : fresh_)
+        {
+            if (fd_.holds(bodies[g]))
+            {
+                near.append(bodies[g]);
+            }
+        }
+    }
+    held.transfer(near);
+    return held;
+}
+
+
+bool Foam::dlmfdCoupling::isFresh(const label g) const
+{
+    return allFresh_ || findSortedIndex(fresh_, g) >= 0;
+}
+
+
+Foam::labelList Foam::dlmfdCoupling::statePartners(const scalar reach) const
+{
+    const label me = Pstream::myProcNo();
+    DynamicList<label> partners;
+    for (label q = 0; q < Pstream::nProcs(); ++q)
+    {
+        if
+        (
+            q != me
+         && (
+                fd_.rankNearBox(q, boxes_->bounds(me), reach)
+             || fd_.rankNearBox(me, boxes_->bounds(q), reach)
+            )
+        )
+        {
+            partners.append(q);
+        }
+    }
+    return labelList(std::move(partners));
+}
+
+
+void Foam::dlmfdCoupling::sendStates
+(
+    const List<fictitiousDomain::body>& bodies
+)
+{
+    // A rank needs a particle's new state if its cells come within the
+    // particle's holder reach of where the particle was this step (the
+    // interior cells it moves with the particle below) or of where the
+    // next step's predictor puts it: within that reach of its new
+    // centre, plus the distance from this step's predicted centre and
+    // twice the next step's travel at this step's dt (a margin for a
+    // longer next step; a rank the state misses stops the next step's
+    // exchange of cell sums)
+    const label me = Pstream::myProcNo();
+    const scalar dt = mesh_.time().deltaTValue();
+    const granularSystem& part = *part_;
+    List<List<labelList>> sendTo(1, List<labelList>(part.size()));
+    scalar farthest = 0;
+    DynamicList<label> near;
+    for (label i = 0; i < part.size(); ++i)
+    {
+        const rigidParticle& p = part.particle(i);
+        const label g = part.globalIndex(i);
+        const scalar moved =
+            mag(granular_.separation(p.position(), bodies[g].centre));
+        const scalar reach =
+            fd_.holderReach(p.shape()) + moved
+          + 2*dt*(mag(p.velocity()) + 2*dt*mag(g_));
+        farthest = max(farthest, reach);
+        fd_.ranksNear(p.position(), reach, near);
+        DynamicList<label> to(near.size());
+        for (const label r : near)
+        {
+            if (r != me)
+            {
+                to.append(r);
+            }
+        }
+        sendTo[0][i].transfer(to);
+    }
+    reduce(farthest, maxOp<scalar>());
+    // (the box bounds the owners' centres; a centre on its face is in it)
+    const List<labelList> partners
+    (
+        1, statePartners(farthest*(1 + 1e-9) + VSMALL)
+    );
+    owned_->sendStates(sendTo, partners, granular_, fresh_);
+    allFresh_ = false;
+}
+
+
 // * * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * //
 
 Foam::tensor Foam::dlmfdCoupling::predictedRotation
@@ -259,6 +378,8 @@ void Foam::dlmfdCoupling::correct(volVectorField& U)
     // settled 5 % faster at CFL 0.5
     vectorField V0, omega0;
     const List<fictitiousDomain::body> bodies(predictedBodies(V0, omega0));
+    List<fictitiousDomain::body> held;
+    const UList<fictitiousDomain::body>& solved = bodiesHeld(bodies, held);
 
     const label index = mesh_.time().timeIndex();
     if (correctedIndex_ != index)
@@ -274,7 +395,7 @@ void Foam::dlmfdCoupling::correct(volVectorField& U)
     ++nCorrections_;
     const scalar dt = mesh_.time().deltaTValue();
     const scalar commBefore = fd_.communicationSeconds();
-    const List<fictitiousDomain::result>& res = fd_.solve(U, bodies, dt, true);
+    const List<fictitiousDomain::result>& res = fd_.solve(U, solved, dt, true);
     const scalar fdComm = fd_.communicationSeconds() - commBefore;
     commSeconds_ += fdComm;
 
@@ -282,14 +403,15 @@ void Foam::dlmfdCoupling::correct(volVectorField& U)
     // what the outer loop has left to converge (on the rank that takes
     // each body's result)
     scalar change = 0;
-    lastV_.setSize(res.size(), vector::max);
-    forAll(res, i)
+    lastV_.setSize(bodies.size(), vector::max);
+    forAll(res, k)
     {
-        if (bodies[i].resultRank != Pstream::myProcNo())
+        if (solved[k].resultRank != Pstream::myProcNo())
         {
             continue;
         }
-        const vector V = bodies[i].V + res[i].dV;
+        const label i = bodyPlaces::global(solved, k);
+        const vector V = solved[k].V + res[k].dV;
         if (nCorrections_ > 1)
         {
             change = max(change, mag(V - lastV_[i]));
@@ -356,9 +478,8 @@ Foam::label Foam::dlmfdCoupling::evolveOwned
             << " dropped" << endl;
     }
 
-    // Every rank's mirror of the scene: the fictitious domain and the
-    // output still need every particle
-    owned_->mirrorScene(granular_);
+    // The new states to the ranks near each particle
+    sendStates(bodies);
     return nSub;
 }
 
@@ -372,6 +493,8 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
     // (2) Granular predictor and the bodies of the constraint
     vectorField V0, omega0;
     const List<fictitiousDomain::body> bodies(predictedBodies(V0, omega0));
+    List<fictitiousDomain::body> held;
+    const UList<fictitiousDomain::body>& solved = bodiesHeld(bodies, held);
     if (correctedIndex_ == mesh_.time().timeIndex())
     {
         // The outer correctors solved this step already: from its start
@@ -403,11 +526,33 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
         // What the fluid gained at the links in its step, the bodies pay
         // (with what the time scheme's history carries of the last step)
         List<vector> linkMomentum(n, Zero), linkMoment(n, Zero);
-        links_.pay(U, dt, ddtCoeff(U), linkMomentum, linkMoment);
+        if (owned_)
+        {
+            // The master pays the history of the bodies it holds; the
+            // solver of each other body adds the master's share (a body
+            // whose state here is older is in no list here: its value
+            // here is never read)
+            boolList masterHolds(n);
+            forAll(bodies, i)
+            {
+                masterHolds[i] = isFresh(i) && fd_.rankHolds(0, bodies[i]);
+            }
+            List<vector> unpaid, unpaidMoment;
+            links_.pay
+            (
+                U, dt, ddtCoeff(U), linkMomentum, linkMoment, masterHolds,
+                &unpaid, &unpaidMoment
+            );
+            fd_.setMasterShare(std::move(unpaid), std::move(unpaidMoment));
+        }
+        else
+        {
+            links_.pay(U, dt, ddtCoeff(U), linkMomentum, linkMoment);
+        }
         fd_.addReleased(linkMomentum, linkMoment);
     }
     const scalar commBefore = fd_.communicationSeconds();
-    const List<fictitiousDomain::result>& res = fd_.solve(U, bodies, dt);
+    const List<fictitiousDomain::result>& res = fd_.solve(U, solved, dt);
     if (penalty_.on())
     {
         // What each body gave this rank's fluid in the step: the fluid
@@ -441,14 +586,15 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
         V3s.setSize(n);
         omega3s.setSize(n);
     }
-    for (label i = 0; i < n; ++i)
+    forAll(solved, k)
     {
-        const fictitiousDomain::body& b = bodies[i];
+        const fictitiousDomain::body& b = solved[k];
         if (b.resultRank != Pstream::myProcNo())
         {
             continue;
         }
-        const fictitiousDomain::result& r = res[i];
+        const label i = bodyPlaces::global(solved, k);
+        const fictitiousDomain::result& r = res[k];
         nPoints += r.nInterior + r.nSurface;
         nSurface += r.nSurface;
         nDropped += r.nSurfaceDropped;
@@ -516,19 +662,31 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
     // cells, at their centres relative to the body at X*, which moved by
     // X^{n+1} - X* (less than half a period, however it was wrapped)
     vectorField& u = U.primitiveFieldRef();
-    for (label i = 0; i < n; ++i)
+    forAll(solved, k)
     {
-        if (!bodies[i].free)
+        const fictitiousDomain::body& b = solved[k];
+        const fictitiousDomain::result& r = res[k];
+        if (!b.free || r.interiorCells.empty())
         {
+            // (a rank that took a body's result but has none of its
+            // cells, its owner at the step's start, needs no new state)
             continue;
         }
-        const rigidParticle& p = granular_.particle(i);
-        const vector moved =
-            granular_.separation(p.position(), bodies[i].centre);
-        const fictitiousDomain::result& r = res[i];
+        const label g = bodyPlaces::global(solved, k);
+        if (!isFresh(g))
+        {
+            FatalErrorInFunction
+                << "t = " << mesh_.time().value() << ": rank "
+                << Pstream::myProcNo() << " holds particle "
+                << granular_.id(g) << " but its new state was not sent to"
+                << " it (the particle travelled farther than the margin"
+                << " its state is sent with)" << exit(FatalError);
+        }
+        const rigidParticle& p = granular_.particle(g);
+        const vector moved = granular_.separation(p.position(), b.centre);
         forAll(r.interiorCells, j)
         {
-            const vector arm = r.interiorCentres[j] - bodies[i].centre - moved;
+            const vector arm = r.interiorCentres[j] - b.centre - moved;
             u[r.interiorCells[j]] = p.velocity() + (p.omega() ^ arm);
             if (r.interiorDeviation.size())
             {
@@ -582,7 +740,7 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
     {
         if (seriesPerRank())
         {
-            handOverForces(bodies);
+            handOverForces();
         }
         writeSeriesRows();
     }

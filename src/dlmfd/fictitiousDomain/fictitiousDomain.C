@@ -184,7 +184,11 @@ Foam::fictitiousDomain::fictitiousDomain
     results_(),
     commSeconds_(0),
     received_(),
-    nSolves_(0)
+    nSolves_(0),
+    perRank_(false),
+    holders_(),
+    largestCellSize_(0),
+    exchange_()
 {
     // Before anything is solved or written: a mesh the coupling is not
     // validated on stops here, not by diverging later
@@ -403,6 +407,10 @@ void Foam::fictitiousDomain::updateMesh()
 {
     search_.rebuild();
     owners_ = cellOwnership(mesh_.nCells());
+    if (perRank_)
+    {
+        updateHolders();
+    }
 
     // The step's per-cell state is made again by the next step
     stepStartIndex_ = -1;
@@ -558,17 +566,19 @@ void Foam::fictitiousDomain::rewindToStepStart()
 }
 
 
-Foam::scalarList Foam::fictitiousDomain::cellSizes
+void Foam::fictitiousDomain::localCellSums
 (
     const UList<body>& bodies,
-    labelList& nHere
+    scalarField& sumV,
+    scalarField& count
 ) const
 {
-    // The mean volume of the cells within each body's bounding radius,
-    // summed over the ranks
+    // The volumes of the cells within each body's bounding radius
     const scalarField& V = mesh_.V();
-    scalarField sumV(bodies.size(), Zero);
-    scalarField count(bodies.size(), Zero);
+    sumV.setSize(bodies.size());
+    count.setSize(bodies.size());
+    sumV = Zero;
+    count = Zero;
     DynamicList<label> near;
     forAll(bodies, b)
     {
@@ -586,40 +596,35 @@ Foam::scalarList Foam::fictitiousDomain::cellSizes
             count[b] += near.size();
         }
     }
-    nHere.setSize(bodies.size());
-    forAll(count, b)
-    {
-        nHere[b] = label(count[b]);
-    }
-    // One reduction for both sums (element by element, in the same order
-    // as two would)
-    const label n = bodies.size();
-    scalarField both(2*n);
-    SubField<scalar>(both, n) = sumV;
-    SubField<scalar>(both, n, n) = count;
-    clockTime clock;
-    reduce(both, sumOp<scalarField>());
-    commSeconds_ += clock.elapsedTime();
-    sumV = SubField<scalar>(both, n);
-    count = SubField<scalar>(both, n, n);
+}
 
+
+Foam::scalarList Foam::fictitiousDomain::cellSizes
+(
+    const UList<body>& bodies,
+    const scalarField& sumV,
+    const scalarField& count
+) const
+{
     scalarList h(bodies.size());
     forAll(bodies, b)
     {
+        const label particle = bodyPlaces::global(bodies, b);
         if (count[b] == 0)
         {
             FatalErrorInFunction
-                << "particle " << b << " at " << bodies[b].centre << " has"
-                << " no cell centre of the mesh within its bounding radius "
-                << bodies[b].shape->boundingRadius() << " m: it is outside"
-                << " the mesh, or smaller than a cell" << exit(FatalError);
+                << "particle " << particle << " at " << bodies[b].centre
+                << " has no cell centre of the mesh within its bounding"
+                << " radius " << bodies[b].shape->boundingRadius() << " m: it"
+                << " is outside the mesh, or smaller than a cell"
+                << exit(FatalError);
         }
         h[b] = cellSize(sumV[b]/count[b]);
 
         // A body must not meet itself across a period
         images_.checkClearance
         (
-            b, bodies[b].shape->boundingRadius() + this->reach()*h[b]
+            particle, bodies[b].shape->boundingRadius() + this->reach()*h[b]
         );
     }
     return h;
@@ -636,9 +641,35 @@ void Foam::fictitiousDomain::startCandidates
     owners_.reset();
 
     const label n = bodies.size();
-    labelList nHere;
-    cand.h = cellSizes(bodies, nHere);
-    cand.solver = bodyExchange::solvingRanks(nHere, commSeconds_);
+    scalarField sumV, count;
+    localCellSums(bodies, sumV, count);
+    if (perRank_)
+    {
+        shareAmongHolders
+        (
+            bodies, sumV, count, cand.solver, cand.masterHolds
+        );
+    }
+    else
+    {
+        labelList nHere(n);
+        forAll(count, b)
+        {
+            nHere[b] = label(count[b]);
+        }
+        // One reduction for both sums (element by element, in the same
+        // order as two would)
+        scalarField both(2*n);
+        SubField<scalar>(both, n) = sumV;
+        SubField<scalar>(both, n, n) = count;
+        clockTime clock;
+        reduce(both, sumOp<scalarField>());
+        commSeconds_ += clock.elapsedTime();
+        sumV = SubField<scalar>(both, n);
+        count = SubField<scalar>(both, n, n);
+        cand.solver = bodyExchange::solvingRanks(nHere, commSeconds_);
+    }
+    cand.h = cellSizes(bodies, sumV, count);
     cand.shifts.setSize(n);
     cand.interior.setSize(n);
     cand.interiorShift.setSize(n);

@@ -212,6 +212,7 @@ Foam::fictitiousDomain::solve
 
 
     places_ = bodyPlaces(bodies);
+    received_.bodiesListed += bodies.size();
 
     // Every body's candidate points on this rank, and the cells shared out
     candidates cand;
@@ -243,21 +244,19 @@ Foam::fictitiousDomain::solve
         {
             contribution con;
             labelList cells;
-            collect
-            (
-                b, bodyPlaces::global(bodies, b), cand, u, localIndex, con,
-                cells
-            );
+            const label global = bodyPlaces::global(bodies, b);
+            collect(b, global, cand, u, localIndex, con, cells);
             if (released.size())
             {
                 con.released = released[b];
                 con.releasedMoment = releasedMoment[b];
             }
-            if (b < pendingMomentum_.size())
+            if (global < pendingMomentum_.size())
             {
-                // Momentum the fluid gained outside the step (a penalty)
-                con.released += pendingMomentum_[b];
-                con.releasedMoment += pendingMoment_[b];
+                // Momentum the fluid gained outside the step (a penalty,
+                // the wall links), by global index
+                con.released += pendingMomentum_[global];
+                con.releasedMoment += pendingMoment_[global];
             }
             if (con.centres.empty() && con.released == vector::zero)
             {
@@ -272,6 +271,30 @@ Foam::fictitiousDomain::solve
             bodiesTo[q].append(b);
             cellsTo[q].append(std::move(cells));
             outgoing[q].append(std::move(con));
+        }
+        if (perRank_)
+        {
+            // Momentum given to a body this rank does not hold would be
+            // lost
+            forAll(pendingMomentum_, g)
+            {
+                if
+                (
+                    places_(g) < 0
+                 && (
+                        pendingMomentum_[g] != vector::zero
+                     || pendingMoment_[g] != vector::zero
+                    )
+                )
+                {
+                    FatalErrorInFunction
+                        << "the fluid of rank " << me << " gave particle "
+                        << g << " momentum " << pendingMomentum_[g]
+                        << " outside the step, but the rank does not hold"
+                        << " it: its list of bodies must hold every body"
+                        << " near its cells (holds())" << exit(FatalError);
+                }
+            }
         }
         pendingMomentum_.clear();
         pendingMoment_.clear();
@@ -311,6 +334,36 @@ Foam::fictitiousDomain::solve
                 whereFrom[b].append(labelPair(r, j));
             }
         }
+
+        // With bodies per rank, the master's share of a body it does not
+        // hold comes first, as the master's part did with every body on
+        // every rank (sent when its momentum was not zero)
+        List<contribution> masterParts(bodies.size());
+        if (perRank_ && masterMomentum_.size())
+        {
+            forAll(bodies, b)
+            {
+                const label g = bodyPlaces::global(bodies, b);
+                if
+                (
+                    solverOf[b] == me
+                 && !cand.masterHolds[b]
+                 && g < masterMomentum_.size()
+                 && masterMomentum_[g] != vector::zero
+                )
+                {
+                    contribution& con = masterParts[b];
+                    con.body = g;
+                    con.released = masterMomentum_[g];
+                    con.releasedMoment = masterMoment_[g];
+                    DynamicList<const contribution*> parts(1, &con);
+                    parts.append(partsOf[b]);
+                    partsOf[b].transfer(parts);
+                }
+            }
+        }
+        masterMomentum_.clear();
+        masterMoment_.clear();
 
         // Solve, and send each rank the force density of its cells (and,
         // with ghost cells, their deviation from the rigid motion)
@@ -422,14 +475,16 @@ Foam::fictitiousDomain::solve
     }
 
     received_.bodiesSolved += solved.size();
-    labelList destination(solved.size());
+    labelList destination(solved.size()), solvedGlobal(solved.size());
     forAll(solved, k)
     {
         destination[k] = bodies[solved[k]].resultRank;
+        solvedGlobal[k] = bodyPlaces::global(bodies, solved[k]);
     }
     bodyExchange::sendResults
     (
-        solved, destination, results_, commSeconds_, received_
+        solved, solvedGlobal, destination, places_, results_, commSeconds_,
+        received_
     );
     ++nSolves_;
 

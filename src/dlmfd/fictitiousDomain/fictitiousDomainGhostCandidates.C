@@ -122,8 +122,22 @@ void Foam::fictitiousDomain::releasedDeviations
     forAll(ghostOwner_, c)
     {
         // The owner field holds global indices
-        const label o = places_(label(ghostOwner_[c]));
-        if (o < 0 || (owners_.owner(c) == o && owners_.inside(c)))
+        const label g = label(ghostOwner_[c]);
+        if (g < 0)
+        {
+            continue;
+        }
+        const label o = places_(g);
+        if (o < 0)
+        {
+            // Its deviation would be lost: the body travelled farther
+            // than its holders' reach, or was not given to this rank
+            FatalErrorInFunction
+                << "cell " << c << " at " << C[c] << " held a deviation of"
+                << " particle " << g << " at the last step, which this"
+                << " rank's list of bodies does not hold" << exit(FatalError);
+        }
+        if (owners_.owner(c) == o && owners_.inside(c))
         {
             continue;
         }

@@ -26,7 +26,10 @@ void Foam::wallLinks::pay
     const scalar dt,
     const scalar ddtCoeff,
     List<vector>& momentum,
-    List<vector>& moment
+    List<vector>& moment,
+    const boolUList& masterHolds,
+    List<vector>* unpaidMomentum,
+    List<vector>* unpaidMoment
 )
 {
     const label nBodies = momentum.size();
@@ -80,11 +83,25 @@ void Foam::wallLinks::pay
     // Each rank pays its own share; (c - 1)/c of the history (the same on
     // every rank) once, on the master
     const scalar carried = (ddtCoeff - 1)/ddtCoeff;
+    if (unpaidMomentum)
+    {
+        unpaidMomentum->setSize(nBodies, Zero);
+        unpaidMoment->setSize(nBodies, Zero);
+    }
     for (label b = 0; b < nBodies; ++b)
     {
         momentum[b] += gained[b];
         moment[b] += gained[nBodies + b];
-        if (Pstream::master())
+        if (masterHolds.size() && !masterHolds[b])
+        {
+            // (what the master's part would have held: 0 + x is x)
+            if (unpaidMomentum)
+            {
+                (*unpaidMomentum)[b] = carried*historyMomentum_[globalOf_[b]];
+                (*unpaidMoment)[b] = carried*historyMoment_[globalOf_[b]];
+            }
+        }
+        else if (Pstream::master())
         {
             momentum[b] += carried*historyMomentum_[globalOf_[b]];
             moment[b] += carried*historyMoment_[globalOf_[b]];

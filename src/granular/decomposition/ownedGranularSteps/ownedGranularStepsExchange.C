@@ -270,11 +270,13 @@ void Foam::ownedGranularSteps::dropGhostsAndMigrate()
     using record = granularSystem::particleRecord;
 
     List<DynamicList<record>> kept(systems_.size());
+    departures_.setSize(systems_.size());
     forAll(systems_, k)
     {
         granularSystem& s = systems_[k];
         const label rank = exchange_.localRanks()[k];
         rankExchange::messages& msg = messages_[k];
+        departures_[k].clear();
         List<DynamicList<record>> leaving(msg.ranks.size());
         Map<label> leaves;
         for (label i = 0; i < s.size(); ++i)
@@ -299,6 +301,7 @@ void Foam::ownedGranularSteps::dropGhostsAndMigrate()
             const label m = neighbourIndex(k, r);
             leaving[m].append(s.record(i));
             leaves.insert(s.globalIndex(i), m);
+            departures_[k].append(labelPair(s.globalIndex(i), r));
             ++counters_.nMigrated;
         }
 
@@ -449,6 +452,39 @@ Foam::List<Foam::DynamicList<char>> Foam::ownedGranularSteps::packOwned
 }
 
 
+Foam::label Foam::ownedGranularSteps::takeStates
+(
+    const UList<char>& buf,
+    label& pos,
+    granularSystem& whole,
+    DynamicList<label>* taken
+)
+{
+    label n = 0;
+    rankExchange::get(buf, pos, n);
+    rigidParticle::motionState state;
+    for (label k = 0; k < n; ++k)
+    {
+        label global = -1;
+        rankExchange::get(buf, pos, global);
+        get(buf, pos, state);
+        if (global < 0 || global >= whole.size())
+        {
+            FatalErrorInFunction
+                << "a particle of global index " << global
+                << " is not in a scene of " << whole.size()
+                << abort(FatalError);
+        }
+        whole.particle(global).setState(state);
+        if (taken)
+        {
+            taken->append(global);
+        }
+    }
+    return n;
+}
+
+
 void Foam::ownedGranularSteps::unpackScene
 (
     const UList<List<char>>& all,
@@ -461,26 +497,10 @@ void Foam::ownedGranularSteps::unpackScene
     {
         whole.history().clear();
     }
-    rigidParticle::motionState state;
     for (const List<char>& buf : all)
     {
         label pos = 0, n = 0;
-        rankExchange::get(buf, pos, n);
-        for (label k = 0; k < n; ++k)
-        {
-            label global = -1;
-            rankExchange::get(buf, pos, global);
-            get(buf, pos, state);
-            if (global < 0 || global >= whole.size())
-            {
-                FatalErrorInFunction
-                    << "a particle of global index " << global
-                    << " is not in a scene of " << whole.size()
-                    << abort(FatalError);
-            }
-            whole.particle(global).setState(state);
-            ++nStates;
-        }
+        nStates += takeStates(buf, pos, whole, nullptr);
         rankExchange::get(buf, pos, n);
         for (label k = 0; k < n; ++k)
         {
@@ -515,9 +535,100 @@ void Foam::ownedGranularSteps::gatherScene(granularSystem* whole) const
 }
 
 
-void Foam::ownedGranularSteps::mirrorScene(granularSystem& whole) const
+void Foam::ownedGranularSteps::sendStates
+(
+    const UList<List<labelList>>& sendTo,
+    const UList<labelList>& partners,
+    granularSystem& mirror,
+    DynamicList<label>& refreshed
+) const
 {
-    unpackScene(exchange_.allGather(packOwned(false)), whole, false);
+    const labelList& ranks = exchange_.localRanks();
+    if (sendTo.size() != systems_.size() || partners.size() != systems_.size())
+    {
+        FatalErrorInFunction
+            << sendTo.size() << " lists of destinations and "
+            << partners.size() << " of partners for " << systems_.size()
+            << " local ranks" << abort(FatalError);
+    }
+    refreshed.clear();
+    List<rankExchange::messages> perRank(systems_.size());
+    forAll(systems_, k)
+    {
+        const granularSystem& s = systems_[k];
+        rankExchange::messages& m = perRank[k];
+        m.setRanks(partners[k]);
+        if (sendTo[k].size() != s.size())
+        {
+            FatalErrorInFunction
+                << "destinations for " << sendTo[k].size() << " of rank "
+                << ranks[k] << "'s " << s.size() << " particles"
+                << abort(FatalError);
+        }
+        labelList nTo(m.ranks.size(), 0);
+        forAll(sendTo[k], i)
+        {
+            for (const label r : sendTo[k][i])
+            {
+                const label j = findSortedIndex(m.ranks, r);
+                if (j < 0)
+                {
+                    FatalErrorInFunction
+                        << "particle " << s.id(i) << " of rank " << ranks[k]
+                        << " is to go to rank " << r << ", which is not"
+                        << " among the ranks it talks to " << m.ranks
+                        << abort(FatalError);
+                }
+                ++nTo[j];
+            }
+        }
+        forAll(m.ranks, j)
+        {
+            rankExchange::put(m.out[j], nTo[j]);
+        }
+        forAll(sendTo[k], i)
+        {
+            for (const label r : sendTo[k][i])
+            {
+                DynamicList<char>& buf = m.out[findSortedIndex(m.ranks, r)];
+                rankExchange::put(buf, s.globalIndex(i));
+                put(buf, s.particle(i).state());
+            }
+        }
+        // This rank's own particles are fresh in the mirror too
+        for (label i = 0; i < s.size(); ++i)
+        {
+            if (!s.ghost(i))
+            {
+                mirror.particle(s.globalIndex(i)).setState
+                (
+                    s.particle(i).state()
+                );
+                refreshed.append(s.globalIndex(i));
+            }
+        }
+    }
+    exchange_.exchange(perRank);
+
+    for (const rankExchange::messages& m : perRank)
+    {
+        for (const List<char>& buf : m.in)
+        {
+            label pos = 0;
+            takeStates(buf, pos, mirror, &refreshed);
+        }
+    }
+    Foam::sort(refreshed);
+    // (several local ranks in one process may take the same particle)
+    label nUnique = 0;
+    forAll(refreshed, i)
+    {
+        if (i == 0 || refreshed[i] != refreshed[nUnique - 1])
+        {
+            refreshed[nUnique++] = refreshed[i];
+        }
+    }
+    refreshed.resize(nUnique);
 }
 
 

@@ -1,0 +1,232 @@
+/*---------------------------------------------------------------------------*\
+  dlmfdFoam: DLM/FD particle-resolved simulation of particulate flows
+-------------------------------------------------------------------------------
+License
+    This file is part of dlmfdFoam, an extension of OpenFOAM.
+
+    dlmfdFoam is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by the
+    Free Software Foundation, either version 3 of the License, or (at your
+    option) any later version. See <http://www.gnu.org/licenses/>.
+
+Description
+    Foam::fictitiousDomain with bodies per rank: which ranks hold a body,
+    and the cell sums of each body shared among them.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fictitiousDomain.H"
+#include "bodyExchange.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::fictitiousDomain::holderReach
+(
+    const particleShape& shape
+) const
+{
+    // A body's points lie within its bounding radius and reach() cells of
+    // it (with h, the mean size of its cells, at most the largest); the
+    // cells it held at the last step, a step's travel back, within one
+    // more cell (a body moving farther is refused in releasedDeviations)
+    return shape.boundingRadius() + (reach() + 1)*largestCellSize_;
+}
+
+
+void Foam::fictitiousDomain::ranksHolding
+(
+    const body& B,
+    DynamicList<label>& ranks
+) const
+{
+    holders_.ranksNear
+    (
+        B.centre, holderReach(*B.shape), images_.period(), ranks
+    );
+    if (!ranks.found(B.resultRank))
+    {
+        ranks.append(B.resultRank);
+        Foam::sort(ranks);
+    }
+}
+
+
+void Foam::fictitiousDomain::updateHolders()
+{
+    holders_.update(search_, mesh_.bounds());
+    largestCellSize_ = 0;
+    forAll(mesh_.V(), c)
+    {
+        largestCellSize_ = max(largestCellSize_, cellSize(mesh_.V()[c]));
+    }
+    reduce(largestCellSize_, maxOp<scalar>());
+}
+
+
+void Foam::fictitiousDomain::shareAmongHolders
+(
+    const UList<body>& bodies,
+    scalarField& sumV,
+    scalarField& count,
+    labelList& solver,
+    boolList& masterHolds
+)
+{
+    const label me = Pstream::myProcNo();
+    const label n = bodies.size();
+
+    // Each body's holders, found alike by each of them; the ranks this
+    // rank shares a body with are those it talks to (each of them finds
+    // this rank among the holders of the same bodies: no rank is told)
+    List<labelList> holders(n);
+    masterHolds.setSize(n);
+    labelHashSet partnerSet;
+    DynamicList<label> near;
+    forAll(bodies, b)
+    {
+        const label particle = bodyPlaces::global(bodies, b);
+        if (b > 0 && !(bodyPlaces::global(bodies, b - 1) < particle))
+        {
+            FatalErrorInFunction
+                << "with bodies per rank the list must be in ascending"
+                << " global index: particle " << particle << " follows "
+                << bodyPlaces::global(bodies, b - 1) << exit(FatalError);
+        }
+        ranksHolding(bodies[b], near);
+        if (!near.found(me))
+        {
+            FatalErrorInFunction
+                << "rank " << me << " was given particle " << particle
+                << " at " << bodies[b].centre << ", which none of its cell"
+                << " centres comes within " << holderReach(*bodies[b].shape)
+                << " m of and whose results rank " << bodies[b].resultRank
+                << " takes" << exit(FatalError);
+        }
+        holders[b] = near;
+        masterHolds[b] = near.found(0);
+        for (const label r : near)
+        {
+            if (r != me)
+            {
+                partnerSet.insert(r);
+            }
+        }
+    }
+    List<rankExchange::messages> m(1);
+    m[0].setRanks(partnerSet.sortedToc());
+    const labelList& partners = m[0].ranks;
+    forAll(bodies, b)
+    {
+        for (const label r : holders[b])
+        {
+            if (r != me)
+            {
+                DynamicList<char>& out = m[0].out[findSortedIndex(partners, r)];
+                rankExchange::put(out, sumV[b]);
+                rankExchange::put(out, count[b]);
+            }
+        }
+    }
+    clockTime clock;
+    exchange_.exchange(m);
+    commSeconds_ += clock.elapsedTime();
+    forAll(partners, k)
+    {
+        if (m[0].in[k].size())
+        {
+            ++received_.messages;
+            received_.bytes += m[0].in[k].size();
+        }
+    }
+
+    // Every holder's sums, added in the whole scene's reduction order; the
+    // solver: the most cells, the lowest rank of those with as many
+    labelList pos(partners.size(), 0);
+    solver.setSize(n);
+    scalarList v, c;
+    forAll(bodies, b)
+    {
+        const labelList& H = holders[b];
+        v.setSize(H.size());
+        c.setSize(H.size());
+        forAll(H, j)
+        {
+            if (H[j] == me)
+            {
+                v[j] = sumV[b];
+                c[j] = count[b];
+            }
+            else
+            {
+                const label k = findSortedIndex(partners, H[j]);
+                rankExchange::get(m[0].in[k], pos[k], v[j]);
+                rankExchange::get(m[0].in[k], pos[k], c[j]);
+            }
+        }
+        sumV[b] = bodyHolders::reductionOrderSum(H, v);
+        count[b] = bodyHolders::reductionOrderSum(H, c);
+        solver[b] = -1;
+        scalar most = 0;
+        forAll(H, j)
+        {
+            if (c[j] > most)
+            {
+                most = c[j];
+                solver[b] = H[j];
+            }
+        }
+    }
+    forAll(partners, k)
+    {
+        if (pos[k] != m[0].in[k].size())
+        {
+            FatalErrorInFunction
+                << "rank " << partners[k] << " sent rank " << me << " "
+                << m[0].in[k].size() << " bytes of cell sums, " << pos[k]
+                << " expected: the two ranks do not agree on the bodies"
+                << " they hold (a particle that travelled farther than the"
+                << " margin its state was sent with)" << exit(FatalError);
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::fictitiousDomain::setBodiesPerRank()
+{
+    perRank_ = true;
+    updateHolders();
+}
+
+
+bool Foam::fictitiousDomain::holds(const body& B) const
+{
+    return !perRank_ || rankHolds(Pstream::myProcNo(), B);
+}
+
+
+bool Foam::fictitiousDomain::rankHolds(const label r, const body& B) const
+{
+    // The test ranksHolding makes for rank r
+    return
+        B.resultRank == r
+     || holders_.rankNear
+        (
+            r, B.centre, holderReach(*B.shape), images_.period()
+        );
+}
+
+
+void Foam::fictitiousDomain::setMasterShare
+(
+    List<vector>&& momentum,
+    List<vector>&& moment
+)
+{
+    masterMomentum_.transfer(momentum);
+    masterMoment_.transfer(moment);
+}
+
+
+// ************************************************************************* //
