@@ -17,7 +17,7 @@ from caseTools import foam_set, sub  # noqa: E402
 project = os.path.dirname(os.path.dirname(here))
 tutorials = {"sphere": "periodicSuspensionSpheres", "cube": "periodicSuspensionCubes"}
 quantities = ["bodies in the list", "bodies with cells here", "their cells", "bodies solved", "messages received",
-              "bytes received"]
+              "bytes received", "state messages per step", "state bytes per step"]
 # simple decomposition along x, then y, then z
 splits = {2: "(2 1 1)", 4: "(2 2 1)", 8: "(2 2 2)", 16: "(4 2 2)"}
 PHASES = ["fluid", "DLM/FD", "granular", "communication", "output"]

@@ -312,8 +312,11 @@ void Foam::dlmfdCoupling::broadcastState()
         }
     }
     Pstream::scatter(state);
+    ++nStateSteps_;
     if (!Pstream::master())
     {
+        stateMessages_ += 1;
+        stateBytes_ += state.byteSize();
         for (label i = 0; i < n; ++i)
         {
             rigidParticle& p = granular_.particle(i);
@@ -376,6 +379,9 @@ Foam::dlmfdCoupling::dlmfdCoupling
     seriesInterval_(properties_.getOrDefault<label>("seriesInterval", 1)),
     vtk_(mesh.time().globalPath()/"VTK", mesh.time().value()),
     fdSeconds_(0),
+    stateMessages_(0),
+    stateBytes_(0),
+    nStateSteps_(0),
     commSeconds_(0),
     granularSeconds_(0),
     seriesSeconds_(0),
@@ -624,19 +630,23 @@ void Foam::dlmfdCoupling::reportExchange() const
     const exchangeTraffic& t = fd_.received();
     Info<< "DLM/FD work and exchange per solve (" << fd_.nSolves()
         << " solves), by a rank: largest, mean over the ranks" << nl;
-    const auto line = [&](const char* what, const scalar total)
+    const auto line = [&](const char* what, const scalar total, const scalar n)
     {
-        const scalar perSolve = total/nSolves;
+        const scalar per = total/n;
         Info<< "    " << what << " "
-            << returnReduce(perSolve, maxOp<scalar>()) << ", "
-            << returnReduce(perSolve, sumOp<scalar>())/nProcs << nl;
+            << returnReduce(per, maxOp<scalar>()) << ", "
+            << returnReduce(per, sumOp<scalar>())/nProcs << nl;
     };
-    line("bodies in the list   ", t.bodiesListed);
-    line("bodies with cells here", t.bodiesHere);
-    line("their cells          ", t.cellsHere);
-    line("bodies solved        ", t.bodiesSolved);
-    line("messages received    ", t.messages);
-    line("bytes received       ", t.bytes);
+    line("bodies in the list   ", t.bodiesListed, nSolves);
+    line("bodies with cells here", t.bodiesHere, nSolves);
+    line("their cells          ", t.cellsHere, nSolves);
+    line("bodies solved        ", t.bodiesSolved, nSolves);
+    line("messages received    ", t.messages, nSolves);
+    line("bytes received       ", t.bytes, nSolves);
+    // The states after the granular step: per step, not per solve
+    const scalar nSteps = max(nStateSteps_, label(1));
+    line("state messages per step", stateMessages_, nSteps);
+    line("state bytes per step ", stateBytes_, nSteps);
     Info<< endl;
 }
 

@@ -194,8 +194,12 @@ void Foam::dlmfdCoupling::sendStates
     (
         1, statePartners(farthest*(1 + 1e-9) + VSMALL)
     );
-    owned_->sendStates(sendTo, partners, granular_, fresh_);
+    const Pair<scalar> received =
+        owned_->sendStates(sendTo, partners, granular_, fresh_);
     allFresh_ = false;
+    stateMessages_ += received.first();
+    stateBytes_ += received.second();
+    ++nStateSteps_;
 }
 
 

@@ -261,6 +261,12 @@ Foam::Pair<Foam::scalar> Foam::ownedGranularSteps::workPerRank() const
 Foam::label Foam::ownedGranularSteps::step(const scalar Deltat)
 {
     counters_ = counters();
+    // (none left before a step that moves nothing)
+    departures_.setSize(systems_.size());
+    for (DynamicList<labelPair>& d : departures_)
+    {
+        d.clear();
+    }
     rankMessages_.setSize(systems_.size());
     rankMessages_ = 0;
     rankBytes_.setSize(systems_.size());

@@ -270,13 +270,11 @@ void Foam::ownedGranularSteps::dropGhostsAndMigrate()
     using record = granularSystem::particleRecord;
 
     List<DynamicList<record>> kept(systems_.size());
-    departures_.setSize(systems_.size());
     forAll(systems_, k)
     {
         granularSystem& s = systems_[k];
         const label rank = exchange_.localRanks()[k];
         rankExchange::messages& msg = messages_[k];
-        departures_[k].clear();
         List<DynamicList<record>> leaving(msg.ranks.size());
         Map<label> leaves;
         for (label i = 0; i < s.size(); ++i)
@@ -535,7 +533,7 @@ void Foam::ownedGranularSteps::gatherScene(granularSystem* whole) const
 }
 
 
-void Foam::ownedGranularSteps::sendStates
+Foam::Pair<Foam::scalar> Foam::ownedGranularSteps::sendStates
 (
     const UList<List<labelList>>& sendTo,
     const UList<labelList>& partners,
@@ -610,12 +608,15 @@ void Foam::ownedGranularSteps::sendStates
     }
     exchange_.exchange(perRank);
 
+    Pair<scalar> received(0, 0);
     for (const rankExchange::messages& m : perRank)
     {
         for (const List<char>& buf : m.in)
         {
             label pos = 0;
             takeStates(buf, pos, mirror, &refreshed);
+            received.first() += 1;
+            received.second() += buf.size();
         }
     }
     Foam::sort(refreshed);
@@ -629,6 +630,7 @@ void Foam::ownedGranularSteps::sendStates
         }
     }
     refreshed.resize(nUnique);
+    return received;
 }
 
 
