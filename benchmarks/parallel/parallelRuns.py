@@ -42,14 +42,19 @@ def build_env(folder):
     return env
 
 
-def make_case(work, shape, steps, cells, env, name=None):
+def make_case(work, shape, steps, cells, env, name=None, box=None):
     """The tutorial of shape in work/<name or shape>, cells^3 cells (0: the
-    tutorial's mesh), steps time steps of t_g/20, no writing, placed"""
+    tutorial's mesh), steps time steps of t_g/20, no writing, placed; box:
+    the periodic box's side over D (None: the tutorial's 8), filled at the
+    tutorial's solid fraction"""
     case = os.path.join(work, name or shape)
     shutil.rmtree(case, ignore_errors=True)
     shutil.copytree(os.path.join(project, "tutorials", tutorials[shape]), case)
     if cells:
         sub(os.path.join(case, "system", "blockMeshDict"), r"^n [^\n]*;", f"n   {cells};")
+    if box:
+        sub(os.path.join(case, "system", "blockMeshDict"), r"^L [^\n]*;", f"L   {box:.12g};")
+        foam_set(case, "constant/collisionProperties", "domain/max", f"({box:.12g} {box:.12g} {box:.12g})")
     for entry, value in [("endTime", f"{0.05*steps:g}"), ("deltaT", "0.05"),
                          ("adjustTimeStep", "no"), ("writeControl", "timeStep"),
                          ("writeInterval", "1000000")]:
