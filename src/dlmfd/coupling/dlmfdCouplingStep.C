@@ -165,6 +165,32 @@ void Foam::dlmfdCoupling::sendStates
     const scalar dt = mesh_.time().deltaTValue();
     const granularSystem& part = *part_;
     List<List<labelList>> sendTo(1, List<labelList>(part.size()));
+    if (mesh_.dynamic())
+    {
+        // A mesh that changes may refine around every particle, farther
+        // than its holders reach, and moves the ranks' cells: every state
+        // to every rank
+        DynamicList<label> others(Pstream::nProcs());
+        for (label q = 0; q < Pstream::nProcs(); ++q)
+        {
+            if (q != me)
+            {
+                others.append(q);
+            }
+        }
+        for (labelList& to : sendTo[0])
+        {
+            to = others;
+        }
+        const List<labelList> everyone(1, others);
+        const Pair<scalar> received =
+            owned_->sendStates(sendTo, everyone, granular_, fresh_);
+        stateMessages_ += received.first();
+        stateBytes_ += received.second();
+        ++nStateSteps_;
+        allFresh_ = true;
+        return;
+    }
     scalar farthest = 0;
     DynamicList<label> near;
     for (label i = 0; i < part.size(); ++i)

@@ -122,6 +122,7 @@ void Foam::fictitiousDomain::shareAmongHolders
             if (r != me)
             {
                 DynamicList<char>& out = m[0].out[findSortedIndex(partners, r)];
+                rankExchange::put(out, bodyPlaces::global(bodies, b));
                 rankExchange::put(out, sumV[b]);
                 rankExchange::put(out, count[b]);
             }
@@ -159,6 +160,18 @@ void Foam::fictitiousDomain::shareAmongHolders
             else
             {
                 const label k = findSortedIndex(partners, H[j]);
+                label g = -1;
+                rankExchange::get(m[0].in[k], pos[k], g);
+                if (g != bodyPlaces::global(bodies, b))
+                {
+                    FatalErrorInFunction
+                        << "rank " << H[j] << " sent rank " << me << " the"
+                        << " cell sums of particle " << g << " where those of "
+                        << bodyPlaces::global(bodies, b) << " were expected:"
+                        << " the two ranks do not agree on the bodies they"
+                        << " hold (a particle that travelled farther than the"
+                        << " margin its state was sent with)" << exit(FatalError);
+                }
                 rankExchange::get(m[0].in[k], pos[k], v[j]);
                 rankExchange::get(m[0].in[k], pos[k], c[j]);
             }
