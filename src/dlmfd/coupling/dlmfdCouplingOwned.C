@@ -1,0 +1,220 @@
+/*---------------------------------------------------------------------------*\
+  dlmfdFoam: DLM/FD particle-resolved simulation of particulate flows
+-------------------------------------------------------------------------------
+License
+    This file is part of dlmfdFoam, an extension of OpenFOAM.
+
+    dlmfdFoam is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by the
+    Free Software Foundation, either version 3 of the License, or (at your
+    option) any later version. See <http://www.gnu.org/licenses/>.
+
+Description
+    Foam::dlmfdCoupling with particleDistribution owned: the bodies a
+    rank's fictitious domain takes, the owners' step and the new states
+    sent to the ranks near each particle.
+
+\*---------------------------------------------------------------------------*/
+
+#include "dlmfdCoupling.H"
+#include "Time.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+const Foam::UList<Foam::fictitiousDomain::body>&
+Foam::dlmfdCoupling::bodiesHeld
+(
+    const List<fictitiousDomain::body>& bodies,
+    List<fictitiousDomain::body>& held
+) const
+{
+    if (!owned_)
+    {
+        return bodies;
+    }
+    // Among the particles whose state is the last step's (the others'
+    // states in the mirror are older: they were sent to this rank by no
+    // one), in ascending global index
+    DynamicList<fictitiousDomain::body> near;
+    if (allFresh_)
+    {
+        for (const fictitiousDomain::body& b : bodies)
+        {
+            if (fd_.holds(b))
+            {
+                near.append(b);
+            }
+        }
+    }
+    else
+    {
+        for (const label g : fresh_)
+        {
+            if (fd_.holds(bodies[g]))
+            {
+                near.append(bodies[g]);
+            }
+        }
+    }
+    held.transfer(near);
+    return held;
+}
+
+
+bool Foam::dlmfdCoupling::isFresh(const label g) const
+{
+    return allFresh_ || findSortedIndex(fresh_, g) >= 0;
+}
+
+
+Foam::labelList Foam::dlmfdCoupling::statePartners(const scalar reach) const
+{
+    const label me = Pstream::myProcNo();
+    DynamicList<label> partners;
+    for (label q = 0; q < Pstream::nProcs(); ++q)
+    {
+        if
+        (
+            q != me
+         && (
+                fd_.rankNearBox(q, boxes_->bounds(me), reach)
+             || fd_.rankNearBox(me, boxes_->bounds(q), reach)
+            )
+        )
+        {
+            partners.append(q);
+        }
+    }
+    return labelList(std::move(partners));
+}
+
+
+void Foam::dlmfdCoupling::sendStates
+(
+    const List<fictitiousDomain::body>& bodies
+)
+{
+    // A rank needs a particle's new state if its cells come within the
+    // particle's holder reach of where the particle was this step (the
+    // interior cells it moves with the particle below) or of where the
+    // next step's predictor puts it: within that reach of its new
+    // centre, plus the distance from this step's predicted centre and
+    // twice the next step's travel at this step's dt (a margin for a
+    // longer next step; a rank the state misses stops the next step's
+    // exchange of cell sums)
+    const label me = Pstream::myProcNo();
+    const scalar dt = mesh_.time().deltaTValue();
+    const granularSystem& part = *part_;
+    List<List<labelList>> sendTo(1, List<labelList>(part.size()));
+    if (mesh_.dynamic())
+    {
+        // A mesh that changes may refine around every particle, farther
+        // than its holders reach, and moves the ranks' cells: every state
+        // to every rank
+        DynamicList<label> others(Pstream::nProcs());
+        for (label q = 0; q < Pstream::nProcs(); ++q)
+        {
+            if (q != me)
+            {
+                others.append(q);
+            }
+        }
+        for (labelList& to : sendTo[0])
+        {
+            to = others;
+        }
+        const List<labelList> everyone(1, others);
+        const Pair<scalar> received =
+            owned_->sendStates(sendTo, everyone, granular_, fresh_);
+        stateMessages_ += received.first();
+        stateBytes_ += received.second();
+        ++nStateSteps_;
+        allFresh_ = true;
+        return;
+    }
+    scalar farthest = 0;
+    DynamicList<label> near;
+    for (label i = 0; i < part.size(); ++i)
+    {
+        const rigidParticle& p = part.particle(i);
+        const label g = part.globalIndex(i);
+        const scalar moved =
+            mag(granular_.separation(p.position(), bodies[g].centre));
+        const scalar reach =
+            fd_.holderReach(p.shape()) + moved
+          + 2*dt*(mag(p.velocity()) + 2*dt*mag(g_));
+        farthest = max(farthest, reach);
+        fd_.ranksNear(p.position(), reach, near);
+        DynamicList<label> to(near.size());
+        for (const label r : near)
+        {
+            if (r != me)
+            {
+                to.append(r);
+            }
+        }
+        sendTo[0][i].transfer(to);
+    }
+    reduce(farthest, maxOp<scalar>());
+    // (the box bounds the owners' centres; a centre on its face is in it)
+    const List<labelList> partners
+    (
+        1, statePartners(farthest*(1 + 1e-9) + VSMALL)
+    );
+    const Pair<scalar> received =
+        owned_->sendStates(sendTo, partners, granular_, fresh_);
+    allFresh_ = false;
+    stateMessages_ += received.first();
+    stateBytes_ += received.second();
+    ++nStateSteps_;
+}
+
+
+Foam::label Foam::dlmfdCoupling::evolveOwned
+(
+    const List<fictitiousDomain::body>& bodies,
+    List<vector>& V3,
+    List<vector>& omega3
+)
+{
+    // The new velocities, which this rank took as the owner, set on its
+    // part by the same calls the master makes in the master-side step
+    // (the part holds its own particles only: the last step dropped the
+    // ghosts)
+    granularSystem& part = *part_;
+    for (label i = 0; i < part.size(); ++i)
+    {
+        const label g = part.globalIndex(i);
+        if (bodies[g].resultRank != Pstream::myProcNo())
+        {
+            FatalErrorInFunction
+                << "Particle " << granular_.id(g) << " (global index " << g
+                << ") is owned by rank " << Pstream::myProcNo()
+                << " but its centre " << part.particle(i).position()
+                << " lies in rank " << bodies[g].resultRank << "'s box"
+                << exit(FatalError);
+        }
+        if (bodies[g].free)
+        {
+            rigidParticle& p = part.particle(i);
+            p.setVelocity(V3[g]);
+            p.setOmega(omega3[g]);
+        }
+    }
+    const label nSub = owned_->evolve(mesh_.time().deltaTValue());
+    part.checkHealth(mesh_.time().value());
+    if (const label far = owned_->lastCounters().nFarRecords)
+    {
+        WarningInFunction
+            << "t = " << mesh_.time().value() << ": " << far
+            << " ghost records came to a rank beyond their reach and were"
+            << " dropped" << endl;
+    }
+
+    // The new states to the ranks near each particle
+    sendStates(bodies);
+    return nSub;
+}
+
+
+// ************************************************************************* //
