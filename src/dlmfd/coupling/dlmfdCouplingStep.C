@@ -362,20 +362,14 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
         List<vector> linkMomentum(n, Zero), linkMoment(n, Zero);
         if (owned_)
         {
-            // The master pays the history of the bodies it holds; the
-            // solver of each other body adds the master's share (a body
-            // whose state here is older is in no list here: its value
-            // here is never read)
-            boolList masterHolds(n);
-            forAll(bodies, i)
-            {
-                masterHolds[i] = isFresh(i) && fd_.rankHolds(0, bodies[i]);
-            }
+            // Among the holders of each body: the master pays the history
+            // of the bodies it holds, the solver of each other body adds
+            // the master's share
             List<vector> unpaid, unpaidMoment;
-            links_.pay
+            links_.payAmongHolders
             (
-                U, dt, ddtCoeff(U), linkMomentum, linkMoment, masterHolds,
-                &unpaid, &unpaidMoment
+                U, dt, ddtCoeff(U), fd_, solved, linkMomentum, linkMoment,
+                unpaid, unpaidMoment
             );
             fd_.setMasterShare(std::move(unpaid), std::move(unpaidMoment));
         }

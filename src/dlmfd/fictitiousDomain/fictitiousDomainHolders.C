@@ -63,23 +63,19 @@ void Foam::fictitiousDomain::updateHolders()
 }
 
 
-void Foam::fictitiousDomain::shareAmongHolders
+void Foam::fictitiousDomain::holdersOf
 (
     const UList<body>& bodies,
-    scalarField& sumV,
-    scalarField& count,
-    labelList& solver,
-    boolList& masterHolds
-)
+    List<labelList>& holders,
+    labelList& partners
+) const
 {
     const label me = Pstream::myProcNo();
-    const label n = bodies.size();
 
     // Each body's holders, found alike by each of them; the ranks this
     // rank shares a body with are those it talks to (each of them finds
     // this rank among the holders of the same bodies: no rank is told)
-    List<labelList> holders(n);
-    masterHolds.setSize(n);
+    holders.setSize(bodies.size());
     labelHashSet partnerSet;
     DynamicList<label> near;
     forAll(bodies, b)
@@ -103,7 +99,6 @@ void Foam::fictitiousDomain::shareAmongHolders
                 << " takes" << exit(FatalError);
         }
         holders[b] = near;
-        masterHolds[b] = near.found(0);
         for (const label r : near)
         {
             if (r != me)
@@ -112,8 +107,32 @@ void Foam::fictitiousDomain::shareAmongHolders
             }
         }
     }
+    partners = partnerSet.sortedToc();
+}
+
+
+void Foam::fictitiousDomain::shareAmongHolders
+(
+    const UList<body>& bodies,
+    scalarField& sumV,
+    scalarField& count,
+    labelList& solver,
+    boolList& masterHolds
+)
+{
+    const label me = Pstream::myProcNo();
+    const label n = bodies.size();
+
+    List<labelList> holders;
+    labelList partnerRanks;
+    holdersOf(bodies, holders, partnerRanks);
+    masterHolds.setSize(n);
+    forAll(bodies, b)
+    {
+        masterHolds[b] = holders[b].found(0);
+    }
     List<rankExchange::messages> m(1);
-    m[0].setRanks(partnerSet.sortedToc());
+    m[0].setRanks(partnerRanks);
     const labelList& partners = m[0].ranks;
     forAll(bodies, b)
     {
@@ -205,6 +224,140 @@ void Foam::fictitiousDomain::shareAmongHolders
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::fictitiousDomain::sumAmongHolders
+(
+    const UList<body>& bodies,
+    const label width,
+    scalarList& values,
+    scalarList& shared,
+    boolList& has
+)
+{
+    const label me = Pstream::myProcNo();
+    const label n = bodies.size();
+    if
+    (
+        values.size() != width*n || shared.size() != width*n
+     || has.size() != n
+    )
+    {
+        FatalErrorInFunction
+            << "sums of " << width << " numbers for " << n << " bodies need "
+            << width*n << " values and as many to share, given "
+            << values.size() << " and " << shared.size() << exit(FatalError);
+    }
+
+    // A record per body both ranks hold: its global index, the sender's
+    // values, whether it has the values to share, and those
+    List<labelList> holders;
+    labelList partnerRanks;
+    holdersOf(bodies, holders, partnerRanks);
+    List<rankExchange::messages> m(1);
+    m[0].setRanks(partnerRanks);
+    const labelList& partners = m[0].ranks;
+    forAll(bodies, b)
+    {
+        for (const label r : holders[b])
+        {
+            if (r == me)
+            {
+                continue;
+            }
+            DynamicList<char>& out = m[0].out[findSortedIndex(partners, r)];
+            rankExchange::put(out, bodyPlaces::global(bodies, b));
+            for (label i = 0; i < width; ++i)
+            {
+                rankExchange::put(out, values[width*b + i]);
+            }
+            rankExchange::put(out, label(has[b]));
+            for (label i = 0; has[b] && i < width; ++i)
+            {
+                rankExchange::put(out, shared[width*b + i]);
+            }
+        }
+    }
+    clockTime clock;
+    exchange_.exchange(m);
+    commSeconds_ += clock.elapsedTime();
+    forAll(partners, k)
+    {
+        if (m[0].in[k].size())
+        {
+            ++received_.messages;
+            received_.bytes += m[0].in[k].size();
+        }
+    }
+
+    // Each holder's values, added in the whole scene's reduction order
+    labelList pos(partners.size(), 0);
+    List<scalarList> v(width);
+    forAll(bodies, b)
+    {
+        const labelList& H = holders[b];
+        const label g = bodyPlaces::global(bodies, b);
+        for (scalarList& column : v)
+        {
+            column.setSize(H.size());
+        }
+        forAll(H, j)
+        {
+            if (H[j] == me)
+            {
+                for (label i = 0; i < width; ++i)
+                {
+                    v[i][j] = values[width*b + i];
+                }
+                continue;
+            }
+            const label k = findSortedIndex(partners, H[j]);
+            label sent = -1;
+            rankExchange::get(m[0].in[k], pos[k], sent);
+            if (sent != g)
+            {
+                FatalErrorInFunction
+                    << "rank " << H[j] << " sent rank " << me << " the"
+                    << " values of particle " << sent << " where those of "
+                    << g << " were expected: the two ranks do not agree on"
+                    << " the bodies they hold" << exit(FatalError);
+            }
+            for (label i = 0; i < width; ++i)
+            {
+                rankExchange::get(m[0].in[k], pos[k], v[i][j]);
+            }
+            label sentShared = 0;
+            rankExchange::get(m[0].in[k], pos[k], sentShared);
+            // This rank's own values to share, or the lowest holder's
+            scalar x = 0;
+            for (label i = 0; sentShared && i < width; ++i)
+            {
+                rankExchange::get(m[0].in[k], pos[k], x);
+                if (!has[b])
+                {
+                    shared[width*b + i] = x;
+                }
+            }
+            has[b] = has[b] || sentShared;
+        }
+        for (label i = 0; i < width; ++i)
+        {
+            values[width*b + i] = bodyHolders::reductionOrderSum(H, v[i]);
+        }
+    }
+    forAll(partners, k)
+    {
+        if (pos[k] != m[0].in[k].size())
+        {
+            FatalErrorInFunction
+                << "rank " << partners[k] << " sent rank " << me << " "
+                << m[0].in[k].size() << " bytes of sums among the holders, "
+                << pos[k] << " expected: the two ranks do not agree on the"
+                << " bodies they hold" << exit(FatalError);
+        }
+    }
+}
+
+
 
 void Foam::fictitiousDomain::setBodiesPerRank()
 {

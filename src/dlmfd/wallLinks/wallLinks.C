@@ -113,7 +113,10 @@ Foam::wallLinks::wallLinks(const fvMesh& mesh, const bool on)
     mesh_(mesh),
     links_(),
     historyMomentum_(historyIO(mesh, "wallLinkHistoryMomentum", on)),
-    historyMoment_(historyIO(mesh, "wallLinkHistoryMoment", on))
+    historyMoment_(historyIO(mesh, "wallLinkHistoryMoment", on)),
+    historyIndex_(),
+    lastPayIndex_(-1),
+    places_()
 {
     if (historyMomentum_.size() != historyMoment_.size())
     {
@@ -144,7 +147,8 @@ void Foam::wallLinks::update
     // The owner field holds global indices (so do the marks below, which
     // cross the ranks and decide ties by index): a body's place in bodies
     // is looked up where its motion is needed
-    const bodyPlaces places(bodies);
+    places_ = bodyPlaces(bodies);
+    const bodyPlaces& places = places_;
     globalOf_.setSize(bodies.size());
     forAll(bodies, b)
     {

@@ -18,39 +18,17 @@ Description
 
 #include "wallLinks.H"
 
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::wallLinks::pay
+Foam::List<Foam::vector> Foam::wallLinks::gainedAtLinks
 (
     const volVectorField& U,
     const scalar dt,
-    const scalar ddtCoeff,
-    List<vector>& momentum,
-    List<vector>& moment,
-    const boolUList& masterHolds,
-    List<vector>* unpaidMomentum,
-    List<vector>* unpaidMoment
-)
+    const scalar ddtCoeff
+) const
 {
-    const label nBodies = momentum.size();
-    if (globalOf_.size() != nBodies)
-    {
-        FatalErrorInFunction
-            << "paying for " << nBodies << " bodies, but the links were"
-            << " found (update) for " << globalOf_.size()
-            << exit(FatalError);
-    }
-    // A restart's history is one per particle, by global index; a body
-    // added later starts without one
-    const label nGlobal = nBodies ? max(globalOf_) + 1 : 0;
-    if (historyMomentum_.size() < nGlobal)
-    {
-        historyMomentum_.setSize(nGlobal, Zero);
-        historyMoment_.setSize(nGlobal, Zero);
-    }
-
-    // This step's flux on this rank: a 1/c share per body, its momentum
-    // then its moment (one list: one reduction below)
+    const label nBodies = globalOf_.size();
+    // A 1/c share of the flux per body, its momentum then its moment
     List<vector> gained(2*nBodies, Zero);
     const vectorField& u = U.primitiveField();
     const PtrList<vectorField> uNbr(neighbourVelocities(U));
@@ -80,28 +58,64 @@ void Foam::wallLinks::pay
         gained[nBodies + L.body] += L.arm ^ p;
     }
 
+    return gained;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::wallLinks::sizeHistory()
+{
+    if (globalOf_.empty())
+    {
+        return;
+    }
+    // A restart's history is one per particle, by global index; a body
+    // added later starts without one (known: it is zero)
+    const label nGlobal = max(globalOf_) + 1;
+    if (historyMomentum_.size() < nGlobal)
+    {
+        historyMomentum_.setSize(nGlobal, Zero);
+        historyMoment_.setSize(nGlobal, Zero);
+    }
+    if (historyIndex_.size() < historyMomentum_.size())
+    {
+        historyIndex_.setSize(historyMomentum_.size(), lastPayIndex_);
+    }
+}
+
+
+void Foam::wallLinks::pay
+(
+    const volVectorField& U,
+    const scalar dt,
+    const scalar ddtCoeff,
+    List<vector>& momentum,
+    List<vector>& moment
+)
+{
+    const label nBodies = momentum.size();
+    if (globalOf_.size() != nBodies)
+    {
+        FatalErrorInFunction
+            << "paying for " << nBodies << " bodies, but the links were"
+            << " found (update) for " << globalOf_.size()
+            << exit(FatalError);
+    }
+    sizeHistory();
+
+    // This step's flux on this rank: a 1/c share per body, its momentum
+    // then its moment (one list: one reduction below)
+    List<vector> gained(gainedAtLinks(U, dt, ddtCoeff));
+
     // Each rank pays its own share; (c - 1)/c of the history (the same on
     // every rank) once, on the master
     const scalar carried = (ddtCoeff - 1)/ddtCoeff;
-    if (unpaidMomentum)
-    {
-        unpaidMomentum->setSize(nBodies, Zero);
-        unpaidMoment->setSize(nBodies, Zero);
-    }
     for (label b = 0; b < nBodies; ++b)
     {
         momentum[b] += gained[b];
         moment[b] += gained[nBodies + b];
-        if (masterHolds.size() && !masterHolds[b])
-        {
-            // (what the master's part would have held: 0 + x is x)
-            if (unpaidMomentum)
-            {
-                (*unpaidMomentum)[b] = carried*historyMomentum_[globalOf_[b]];
-                (*unpaidMoment)[b] = carried*historyMoment_[globalOf_[b]];
-            }
-        }
-        else if (Pstream::master())
+        if (Pstream::master())
         {
             momentum[b] += carried*historyMomentum_[globalOf_[b]];
             moment[b] += carried*historyMoment_[globalOf_[b]];
@@ -119,5 +133,150 @@ void Foam::wallLinks::pay
         HMoment = gained[nBodies + b] + carried*HMoment;
     }
 }
+
+
+void Foam::wallLinks::payAmongHolders
+(
+    const volVectorField& U,
+    const scalar dt,
+    const scalar ddtCoeff,
+    fictitiousDomain& fd,
+    const UList<body>& held,
+    List<vector>& momentum,
+    List<vector>& moment,
+    List<vector>& unpaidMomentum,
+    List<vector>& unpaidMoment
+)
+{
+    const label me = Pstream::myProcNo();
+    const label nBodies = momentum.size();
+    if (globalOf_.size() != nBodies)
+    {
+        FatalErrorInFunction
+            << "paying for " << nBodies << " bodies, but the links were"
+            << " found (update) for " << globalOf_.size()
+            << exit(FatalError);
+    }
+    sizeHistory();
+    const List<vector> gained(gainedAtLinks(U, dt, ddtCoeff));
+
+    // Per body this rank holds: its gain here, summed over the holders as
+    // the reduction of pay() would (a rank with links of a body holds
+    // it), and its history from the holders that updated it at the last
+    // step (those whose cells are near it then and now; its owner, the
+    // box its centre is in, may be a new holder)
+    const label width = 6;
+    const label n = held.size();
+    const bodyPlaces& places = places_;
+    scalarList values(width*n, Zero), history(width*n, Zero);
+    boolList has(n, false);
+    for (label k = 0; k < n; ++k)
+    {
+        const label g = bodyPlaces::global(held, k);
+        const label b = places(g);
+        if (b < 0)
+        {
+            FatalErrorInFunction
+                << "rank " << me << " holds particle " << g << ", which is"
+                << " not in the list its links were found for (update)"
+                << exit(FatalError);
+        }
+        has[k] = g < historyIndex_.size() && historyIndex_[g] == lastPayIndex_;
+        for (label i = 0; i < 3; ++i)
+        {
+            values[width*k + i] = gained[b][i];
+            values[width*k + 3 + i] = gained[nBodies + b][i];
+            if (has[k])
+            {
+                history[width*k + i] = historyMomentum_[g][i];
+                history[width*k + 3 + i] = historyMoment_[g][i];
+            }
+        }
+    }
+    fd.sumAmongHolders(held, width, values, history, has);
+    forAll(has, k)
+    {
+        if (!has[k])
+        {
+            FatalErrorInFunction
+                << "none of the ranks that hold particle "
+                << bodyPlaces::global(held, k) << " now held it at the last"
+                << " step (time index " << lastPayIndex_ << "): its wall"
+                << " links' history (fictitiousDomain ghostShear link) is"
+                << " lost" << exit(FatalError);
+        }
+    }
+
+    // Each rank pays its own share; the master (c - 1)/c of the history of
+    // the bodies it holds; of each other, that share is left unpaid (the
+    // solver adds it as the master's part: 0 + x is x)
+    const scalar carried = (ddtCoeff - 1)/ddtCoeff;
+    unpaidMomentum.setSize(historyMomentum_.size(), Zero);
+    unpaidMoment.setSize(historyMomentum_.size(), Zero);
+    const label index = U.mesh().time().timeIndex();
+    for (label k = 0; k < n; ++k)
+    {
+        const label g = bodyPlaces::global(held, k);
+        const label b = places(g);
+        const vector sum
+        (
+            values[width*k], values[width*k + 1], values[width*k + 2]
+        );
+        const vector sumMoment
+        (
+            values[width*k + 3], values[width*k + 4], values[width*k + 5]
+        );
+        const vector H
+        (
+            history[width*k], history[width*k + 1], history[width*k + 2]
+        );
+        const vector HMoment
+        (
+            history[width*k + 3], history[width*k + 4],
+            history[width*k + 5]
+        );
+        momentum[b] += gained[b];
+        moment[b] += gained[nBodies + b];
+        if (fd.rankHolds(0, held[k]))
+        {
+            if (Pstream::master())
+            {
+                momentum[b] += carried*H;
+                moment[b] += carried*HMoment;
+            }
+        }
+        else
+        {
+            unpaidMomentum[g] = carried*H;
+            unpaidMoment[g] = carried*HMoment;
+        }
+        historyMomentum_[g] = sum + carried*H;
+        historyMoment_[g] = sumMoment + carried*HMoment;
+        historyIndex_[g] = index;
+    }
+    lastPayIndex_ = index;
+
+    // A restart is written whole by every rank: each body's history from
+    // its owner (the others give exact zeros)
+    if (U.mesh().time().writeTime())
+    {
+        const label nGlobal = historyMomentum_.size();
+        List<vector> all(2*nGlobal, Zero);
+        for (label k = 0; k < n; ++k)
+        {
+            if (held[k].resultRank == me)
+            {
+                const label g = bodyPlaces::global(held, k);
+                all[g] = historyMomentum_[g];
+                all[nGlobal + g] = historyMoment_[g];
+            }
+        }
+        Pstream::listCombineGather(all, plusEqOp<vector>());
+        Pstream::listCombineScatter(all);
+        historyMomentum_ = SubList<vector>(all, nGlobal);
+        historyMoment_ = SubList<vector>(all, nGlobal, nGlobal);
+    }
+}
+
 
 // ************************************************************************* //
