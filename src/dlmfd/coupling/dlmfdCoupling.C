@@ -233,7 +233,18 @@ void Foam::dlmfdCoupling::setOwned(const sceneEffects& effects)
     owned_.reset(new ownedGranularSteps(std::move(parts), *boxes_, exchange_));
     // Each rank's fictitious domain takes the bodies near its cells and
     // its own
-    fd_.setBodiesPerRank();
+    List<boundBox> ownerBoxes(Pstream::nProcs());
+    forAll(ownerBoxes, r)
+    {
+        ownerBoxes[r] = boxes_->bounds(r);
+    }
+    scalar largestRadius = 0;
+    for (label i = 0; i < granular_.size(); ++i)
+    {
+        largestRadius =
+            max(largestRadius, granular_.particle(i).shape().boundingRadius());
+    }
+    fd_.setBodiesPerRank(std::move(ownerBoxes), largestRadius);
     Info<< "Particle distribution: owned, " << n.x() << " x " << n.y()
         << " x " << n.z() << " boxes of the collision domain; each rank"
         << " moves the particles in its box" << nl;

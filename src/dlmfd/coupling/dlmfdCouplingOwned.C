@@ -32,28 +32,14 @@ Foam::dlmfdCoupling::bodiesHeld
     {
         return bodies;
     }
-    // Among the particles whose state is the last step's (the others'
-    // states in the mirror are older: they were sent to this rank by no
-    // one), in ascending global index
+    // Among the particles listed, whose state is the last step's, in
+    // ascending global index
     DynamicList<fictitiousDomain::body> near;
-    if (allFresh_)
+    for (const fictitiousDomain::body& b : bodies)
     {
-        for (const fictitiousDomain::body& b : bodies)
+        if (fd_.holds(b))
         {
-            if (fd_.holds(b))
-            {
-                near.append(b);
-            }
-        }
-    }
-    else
-    {
-        for (const label g : fresh_)
-        {
-            if (fd_.holds(bodies[g]))
-            {
-                near.append(bodies[g]);
-            }
+            near.append(b);
         }
     }
     held.transfer(near);
@@ -67,9 +53,48 @@ bool Foam::dlmfdCoupling::isFresh(const label g) const
 }
 
 
+Foam::label Foam::dlmfdCoupling::listedCount() const
+{
+    return owned_ && !allFresh_ ? fresh_.size() : granular_.size();
+}
+
+
+Foam::label Foam::dlmfdCoupling::listedParticle(const label k) const
+{
+    return owned_ && !allFresh_ ? fresh_[k] : k;
+}
+
+
+const Foam::fictitiousDomain::body& Foam::dlmfdCoupling::ownBody
+(
+    const UList<fictitiousDomain::body>& bodies,
+    const bodyPlaces& places,
+    const label i
+) const
+{
+    const label g = part_->globalIndex(i);
+    const label k = places(g);
+    if (k < 0)
+    {
+        FatalErrorInFunction
+            << "Particle " << granular_.id(g) << " (global index " << g
+            << ") is owned by rank " << Pstream::myProcNo() << " but is not"
+            << " in the rank's list of bodies: its state was not the last"
+            << " step's here (a rank is sent the state of each particle that"
+            << " may enter its box in the next step)"
+            << exit(FatalError);
+    }
+    return bodies[k];
+}
+
+
 Foam::labelList Foam::dlmfdCoupling::statePartners(const scalar reach) const
 {
+    // The ranks whose cells come near this rank's box, or whose box this
+    // rank's cells or box come near (each side finds the other)
     const label me = Pstream::myProcNo();
+    DynamicList<label> boxNeighbours;
+    boxes_->neighbours(me, reach, boxNeighbours);
     DynamicList<label> partners;
     for (label q = 0; q < Pstream::nProcs(); ++q)
     {
@@ -79,6 +104,7 @@ Foam::labelList Foam::dlmfdCoupling::statePartners(const scalar reach) const
          && (
                 fd_.rankNearBox(q, boxes_->bounds(me), reach)
              || fd_.rankNearBox(me, boxes_->bounds(q), reach)
+             || boxNeighbours.found(q)
             )
         )
         {
@@ -133,18 +159,21 @@ void Foam::dlmfdCoupling::sendStates
         return;
     }
     scalar farthest = 0;
-    DynamicList<label> near;
+    DynamicList<label> near, nextOwners;
+    const bodyPlaces places(bodies);
     for (label i = 0; i < part.size(); ++i)
     {
         const rigidParticle& p = part.particle(i);
-        const label g = part.globalIndex(i);
+        const fictitiousDomain::body& B = ownBody(bodies, places, i);
         const scalar moved =
-            mag(granular_.separation(p.position(), bodies[g].centre));
-        const scalar reach =
-            fd_.holderReach(p.shape()) + moved
-          + 2*dt*(mag(p.velocity()) + 2*dt*mag(g_));
+            mag(granular_.separation(p.position(), B.centre));
+        const scalar next = 2*dt*(mag(p.velocity()) + 2*dt*mag(g_));
+        const scalar reach = fd_.holderReach(p.shape()) + moved + next;
         farthest = max(farthest, reach);
         fd_.ranksNear(p.position(), reach, near);
+        // and the ranks whose box it may enter in the next step: its owner
+        // then, which needs its body in the step's list
+        boxes_->ranksWithin(p.position(), next, nextOwners);
         DynamicList<label> to(near.size());
         for (const label r : near)
         {
@@ -153,6 +182,14 @@ void Foam::dlmfdCoupling::sendStates
                 to.append(r);
             }
         }
+        for (const label r : nextOwners)
+        {
+            if (r != me && !near.found(r))
+            {
+                to.append(r);
+            }
+        }
+        Foam::sort(to);
         sendTo[0][i].transfer(to);
     }
     reduce(farthest, maxOp<scalar>());
@@ -182,23 +219,25 @@ Foam::label Foam::dlmfdCoupling::evolveOwned
     // (the part holds its own particles only: the last step dropped the
     // ghosts)
     granularSystem& part = *part_;
+    const bodyPlaces places(bodies);
     for (label i = 0; i < part.size(); ++i)
     {
         const label g = part.globalIndex(i);
-        if (bodies[g].resultRank != Pstream::myProcNo())
+        const fictitiousDomain::body& B = ownBody(bodies, places, i);
+        if (B.resultRank != Pstream::myProcNo())
         {
             FatalErrorInFunction
                 << "Particle " << granular_.id(g) << " (global index " << g
                 << ") is owned by rank " << Pstream::myProcNo()
                 << " but its centre " << part.particle(i).position()
-                << " lies in rank " << bodies[g].resultRank << "'s box"
+                << " lies in rank " << B.resultRank << "'s box"
                 << exit(FatalError);
         }
-        if (bodies[g].free)
+        if (B.free)
         {
             rigidParticle& p = part.particle(i);
-            p.setVelocity(V3[g]);
-            p.setOmega(omega3[g]);
+            p.setVelocity(V3[places(g)]);
+            p.setOmega(omega3[places(g)]);
         }
     }
     const label nSub = owned_->evolve(mesh_.time().deltaTValue());

@@ -33,16 +33,17 @@ Foam::List<Foam::fictitiousDomain::body> Foam::dlmfdCoupling::predictedBodies
     using motionKind = rigidParticle::motionKind;
 
     const scalar dt = mesh_.time().deltaTValue();
-    const label n = granular_.size();
+    const label n = listedCount();
     V0.setSize(n);
     omega0.setSize(n);
     List<fictitiousDomain::body> bodies(n);
-    for (label i = 0; i < n; ++i)
+    for (label k = 0; k < n; ++k)
     {
+        const label i = listedParticle(k);
         const rigidParticle& p = granular_.particle(i);
-        fictitiousDomain::body& b = bodies[i];
-        V0[i] = p.velocity();
-        omega0[i] = p.omega();
+        fictitiousDomain::body& b = bodies[k];
+        V0[k] = p.velocity();
+        omega0[k] = p.omega();
         b.shape = &p.shape();
         b.index = granular_.globalIndex(i);
         // With owned particles the owner takes the body's result (the
@@ -52,15 +53,15 @@ Foam::List<Foam::fictitiousDomain::body> Foam::dlmfdCoupling::predictedBodies
         b.free = p.motion() == motionKind::free;
         b.rotates = p.rotates();
         b.excessDensity = densityRatio(i) - 1;
-        b.V = V0[i];
-        b.omega = omega0[i];
+        b.V = V0[k];
+        b.omega = omega0[k];
         if (b.free)
         {
             b.V += dt*g_;
             if (!p.isotropic() && b.rotates)
             {
                 const tensor J = volumeInertia(i);
-                b.omega -= dt*(inv(J) & (omega0[i] ^ (J & omega0[i])));
+                b.omega -= dt*(inv(J) & (omega0[k] ^ (J & omega0[k])));
             }
             if (p.planar())
             {
@@ -175,19 +176,20 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::dlmfdCoupling::wallLinkMatrix
 )
 {
     clockTime clock;
-    const label n = granular_.size();
+    const label n = listedCount();
     // The bodies where and as they move now (the ghost cells' are the
     // predictor's, a step's travel apart at most)
     List<fictitiousDomain::body> bodies(n);
-    for (label i = 0; i < n; ++i)
+    for (label k = 0; k < n; ++k)
     {
+        const label i = listedParticle(k);
         const rigidParticle& p = granular_.particle(i);
-        bodies[i].shape = &p.shape();
-        bodies[i].index = granular_.globalIndex(i);
-        bodies[i].centre = p.position();
-        bodies[i].R = p.R();
-        bodies[i].V = p.velocity();
-        bodies[i].omega = p.omega();
+        bodies[k].shape = &p.shape();
+        bodies[k].index = granular_.globalIndex(i);
+        bodies[k].centre = p.position();
+        bodies[k].R = p.R();
+        bodies[k].V = p.velocity();
+        bodies[k].omega = p.omega();
     }
     links_.update(fd_.ghostOwner(), bodies, fd_.images());
     tmp<fvVectorMatrix> m = links_.matrix(U, nu);
@@ -284,7 +286,7 @@ void Foam::dlmfdCoupling::correct(volVectorField& U)
     // what the outer loop has left to converge (on the rank that takes
     // each body's result)
     scalar change = 0;
-    lastV_.setSize(bodies.size(), vector::max);
+    lastV_.setSize(granular_.size(), vector::max);
     forAll(res, k)
     {
         if (solved[k].resultRank != Pstream::myProcNo())
@@ -353,19 +355,20 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
                 moment[i] += (c - 1)/c*givenMoment_[i];
             }
         }
-        fd_.addReleased(momentum, moment);
+        fd_.addReleased(bodies, momentum, moment);
     }
     if (fd_.hasWallLinks())
     {
         // What the fluid gained at the links in its step, the bodies pay
         // (with what the time scheme's history carries of the last step)
-        List<vector> linkMomentum(n, Zero), linkMoment(n, Zero);
+        List<vector> linkMomentum(bodies.size(), Zero);
+        List<vector> linkMoment(bodies.size(), Zero);
         if (owned_)
         {
             // Among the holders of each body: the master pays the history
             // of the bodies it holds, the solver of each other body adds
             // the master's share
-            List<vector> unpaid, unpaidMoment;
+            Map<vector> unpaid, unpaidMoment;
             links_.payAmongHolders
             (
                 U, dt, ddtCoeff(U), fd_, solved, linkMomentum, linkMoment,
@@ -377,7 +380,7 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
         {
             links_.pay(U, dt, ddtCoeff(U), linkMomentum, linkMoment);
         }
-        fd_.addReleased(linkMomentum, linkMoment);
+        fd_.addReleased(bodies, linkMomentum, linkMoment);
     }
     const scalar commBefore = fd_.communicationSeconds();
     const List<fictitiousDomain::result>& res = fd_.solve(U, solved, dt);
@@ -408,11 +411,13 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
     scalar maxError = 0;
     const bool corrected = correctedIndex_ == mesh_.time().timeIndex();
     scalar lastChange = 0;
+    // (by place in bodies, as V0)
+    const bodyPlaces places(bodies);
     List<vector> V3s, omega3s;
     if (owned_)
     {
-        V3s.setSize(n);
-        omega3s.setSize(n);
+        V3s.setSize(bodies.size());
+        omega3s.setSize(bodies.size());
     }
     forAll(solved, k)
     {
@@ -422,6 +427,7 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
             continue;
         }
         const label i = bodyPlaces::global(solved, k);
+        const label place = places(i);
         const fictitiousDomain::result& r = res[k];
         nPoints += r.nInterior + r.nSurface;
         nSurface += r.nSurface;
@@ -436,16 +442,16 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
             lastChange = max(lastChange, mag(V3 - lastV_[i]));
         }
         const scalar vp = b.shape->volume();
-        Fh_[i] = rhoFluid_*(vp*(V3 - V0[i])/dt - r.sumLambda);
+        Fh_[i] = rhoFluid_*(vp*(V3 - V0[place])/dt - r.sumLambda);
         Th_[i] =
             rhoFluid_
-           *((volumeInertia(i) & (omega3 - omega0[i]))/dt - r.sumMoment);
+           *((volumeInertia(i) & (omega3 - omega0[place]))/dt - r.sumMoment);
 
         if (owned_)
         {
             // (set on this owner's part: evolveOwned)
-            V3s[i] = V3;
-            omega3s[i] = omega3;
+            V3s[place] = V3;
+            omega3s[place] = omega3;
         }
         else if (b.free)
         {

@@ -188,7 +188,10 @@ Foam::fictitiousDomain::fictitiousDomain
     perRank_(false),
     holders_(),
     largestCellSize_(0),
-    exchange_()
+    exchange_(),
+    ownerBoxes_(),
+    largestRadius_(0),
+    holderPartners_()
 {
     // Before anything is solved or written: a mesh the coupling is not
     // validated on stops here, not by diverging later
@@ -471,19 +474,26 @@ void Foam::fictitiousDomain::keepStepStart(const volVectorField& U)
 
 void Foam::fictitiousDomain::addReleased
 (
+    const UList<body>& bodies,
     const UList<vector>& momentum,
     const UList<vector>& moment
 )
 {
-    if (pendingMomentum_.size() != momentum.size())
+    if (momentum.size() != bodies.size() || moment.size() != bodies.size())
     {
-        pendingMomentum_.setSize(momentum.size(), Zero);
-        pendingMoment_.setSize(momentum.size(), Zero);
+        FatalErrorInFunction
+            << "momentum for " << momentum.size() << " and moment for "
+            << moment.size() << " bodies given for a list of "
+            << bodies.size() << exit(FatalError);
     }
     forAll(momentum, b)
     {
-        pendingMomentum_[b] += momentum[b];
-        pendingMoment_[b] += moment[b];
+        // (from zero: 0 + x is x)
+        const label g = bodyPlaces::global(bodies, b);
+        pendingMomentum_.insert(g, Zero);
+        pendingMoment_.insert(g, Zero);
+        pendingMomentum_[g] += momentum[b];
+        pendingMoment_[g] += moment[b];
     }
 }
 

@@ -251,7 +251,7 @@ Foam::fictitiousDomain::solve
                 con.released = released[b];
                 con.releasedMoment = releasedMoment[b];
             }
-            if (global < pendingMomentum_.size())
+            if (pendingMomentum_.found(global))
             {
                 // Momentum the fluid gained outside the step (a penalty,
                 // the wall links), by global index
@@ -276,8 +276,9 @@ Foam::fictitiousDomain::solve
         {
             // Momentum given to a body this rank does not hold would be
             // lost
-            forAll(pendingMomentum_, g)
+            forAllConstIters(pendingMomentum_, iter)
             {
+                const label g = iter.key();
                 if
                 (
                     places_(g) < 0
@@ -348,7 +349,7 @@ Foam::fictitiousDomain::solve
                 (
                     solverOf[b] == me
                  && !cand.masterHolds[b]
-                 && g < masterMomentum_.size()
+                 && masterMomentum_.found(g)
                  && masterMomentum_[g] != vector::zero
                 )
                 {

@@ -60,6 +60,33 @@ void Foam::fictitiousDomain::updateHolders()
         largestCellSize_ = max(largestCellSize_, cellSize(mesh_.V()[c]));
     }
     reduce(largestCellSize_, maxOp<scalar>());
+    holderPartners_ = holderPartners();
+}
+
+
+Foam::labelList Foam::fictitiousDomain::holderPartners() const
+{
+    const label me = Pstream::myProcNo();
+    const scalar R = largestRadius_ + (reach() + 1)*largestCellSize_;
+    const vector& period = images_.period();
+    DynamicList<label> partners;
+    for (label q = 0; q < Pstream::nProcs(); ++q)
+    {
+        if
+        (
+            q != me
+         && (
+                holders_.boxNear(q, holders_.box(me), 2*R, period)
+             || holders_.boxNear(me, holders_.box(q), 2*R, period)
+             || holders_.boxNear(me, ownerBoxes_[q], R, period)
+             || holders_.boxNear(q, ownerBoxes_[me], R, period)
+            )
+        )
+        {
+            partners.append(q);
+        }
+    }
+    return labelList(std::move(partners));
 }
 
 
@@ -73,10 +100,10 @@ void Foam::fictitiousDomain::holdersOf
     const label me = Pstream::myProcNo();
 
     // Each body's holders, found alike by each of them; the ranks this
-    // rank shares a body with are those it talks to (each of them finds
-    // this rank among the holders of the same bodies: no rank is told)
+    // rank talks to are its partners by the boxes alone, so that a rank
+    // that lacks a body another holds still answers (with records the
+    // other finds wrong: a message, not a wait)
     holders.setSize(bodies.size());
-    labelHashSet partnerSet;
     DynamicList<label> near;
     forAll(bodies, b)
     {
@@ -98,16 +125,50 @@ void Foam::fictitiousDomain::holdersOf
                 << " m of and whose results rank " << bodies[b].resultRank
                 << " takes" << exit(FatalError);
         }
+        if (bodies[b].shape->boundingRadius() > largestRadius_)
+        {
+            FatalErrorInFunction
+                << "particle " << particle << " reaches "
+                << bodies[b].shape->boundingRadius() << " m from its centre,"
+                << " beyond the largest bounding radius given at the start, "
+                << largestRadius_ << " m" << exit(FatalError);
+        }
         holders[b] = near;
         for (const label r : near)
         {
-            if (r != me)
+            if (r != me && findSortedIndex(holderPartners_, r) < 0)
             {
-                partnerSet.insert(r);
+                FatalErrorInFunction
+                    << "rank " << r << " holds particle " << particle
+                    << " with rank " << me << " but is not among its"
+                    << " partners " << holderPartners_ << " (their boxes lie"
+                    << " beyond the largest holder reach)" << exit(FatalError);
             }
         }
     }
-    partners = partnerSet.sortedToc();
+    partners = holderPartners_;
+}
+
+
+void Foam::fictitiousDomain::exchangeAmongHolders
+(
+    UList<rankExchange::messages>& m
+)
+{
+    clockTime clock;
+    exchange_.exchange(m);
+    commSeconds_ += clock.elapsedTime();
+    for (const rankExchange::messages& msg : m)
+    {
+        for (const List<char>& in : msg.in)
+        {
+            if (in.size())
+            {
+                ++received_.messages;
+                received_.bytes += in.size();
+            }
+        }
+    }
 }
 
 
@@ -147,17 +208,7 @@ void Foam::fictitiousDomain::shareAmongHolders
             }
         }
     }
-    clockTime clock;
-    exchange_.exchange(m);
-    commSeconds_ += clock.elapsedTime();
-    forAll(partners, k)
-    {
-        if (m[0].in[k].size())
-        {
-            ++received_.messages;
-            received_.bytes += m[0].in[k].size();
-        }
-    }
+    exchangeAmongHolders(m);
 
     // Every holder's sums, added in the whole scene's reduction order; the
     // solver: the most cells, the lowest rank of those with as many
@@ -277,17 +328,7 @@ void Foam::fictitiousDomain::sumAmongHolders
             }
         }
     }
-    clockTime clock;
-    exchange_.exchange(m);
-    commSeconds_ += clock.elapsedTime();
-    forAll(partners, k)
-    {
-        if (m[0].in[k].size())
-        {
-            ++received_.messages;
-            received_.bytes += m[0].in[k].size();
-        }
-    }
+    exchangeAmongHolders(m);
 
     // Each holder's values, added in the whole scene's reduction order
     labelList pos(partners.size(), 0);
@@ -359,9 +400,21 @@ void Foam::fictitiousDomain::sumAmongHolders
 
 
 
-void Foam::fictitiousDomain::setBodiesPerRank()
+void Foam::fictitiousDomain::setBodiesPerRank
+(
+    List<boundBox>&& ownerBoxes,
+    const scalar largestRadius
+)
 {
+    if (ownerBoxes.size() != Pstream::nProcs())
+    {
+        FatalErrorInFunction
+            << ownerBoxes.size() << " boxes of owned particles for "
+            << Pstream::nProcs() << " ranks" << exit(FatalError);
+    }
     perRank_ = true;
+    ownerBoxes_.transfer(ownerBoxes);
+    largestRadius_ = largestRadius;
     updateHolders();
 }
 
@@ -386,8 +439,8 @@ bool Foam::fictitiousDomain::rankHolds(const label r, const body& B) const
 
 void Foam::fictitiousDomain::setMasterShare
 (
-    List<vector>&& momentum,
-    List<vector>&& moment
+    Map<vector>&& momentum,
+    Map<vector>&& moment
 )
 {
     masterMomentum_.transfer(momentum);

@@ -64,8 +64,15 @@ Foam::List<Foam::vector> Foam::wallLinks::gainedAtLinks
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::wallLinks::sizeHistory()
+void Foam::wallLinks::sizeHistory(const label nBodies)
 {
+    if (globalOf_.size() != nBodies)
+    {
+        FatalErrorInFunction
+            << "paying for " << nBodies << " bodies, but the links were"
+            << " found (update) for " << globalOf_.size()
+            << exit(FatalError);
+    }
     if (globalOf_.empty())
     {
         return;
@@ -95,14 +102,7 @@ void Foam::wallLinks::pay
 )
 {
     const label nBodies = momentum.size();
-    if (globalOf_.size() != nBodies)
-    {
-        FatalErrorInFunction
-            << "paying for " << nBodies << " bodies, but the links were"
-            << " found (update) for " << globalOf_.size()
-            << exit(FatalError);
-    }
-    sizeHistory();
+    sizeHistory(nBodies);
 
     // This step's flux on this rank: a 1/c share per body, its momentum
     // then its moment (one list: one reduction below)
@@ -144,20 +144,13 @@ void Foam::wallLinks::payAmongHolders
     const UList<body>& held,
     List<vector>& momentum,
     List<vector>& moment,
-    List<vector>& unpaidMomentum,
-    List<vector>& unpaidMoment
+    Map<vector>& unpaidMomentum,
+    Map<vector>& unpaidMoment
 )
 {
     const label me = Pstream::myProcNo();
     const label nBodies = momentum.size();
-    if (globalOf_.size() != nBodies)
-    {
-        FatalErrorInFunction
-            << "paying for " << nBodies << " bodies, but the links were"
-            << " found (update) for " << globalOf_.size()
-            << exit(FatalError);
-    }
-    sizeHistory();
+    sizeHistory(nBodies);
     const List<vector> gained(gainedAtLinks(U, dt, ddtCoeff));
 
     // Per body this rank holds: its gain here, summed over the holders as
@@ -211,8 +204,8 @@ void Foam::wallLinks::payAmongHolders
     // the bodies it holds; of each other, that share is left unpaid (the
     // solver adds it as the master's part: 0 + x is x)
     const scalar carried = (ddtCoeff - 1)/ddtCoeff;
-    unpaidMomentum.setSize(historyMomentum_.size(), Zero);
-    unpaidMoment.setSize(historyMomentum_.size(), Zero);
+    unpaidMomentum.clear();
+    unpaidMoment.clear();
     const label index = U.mesh().time().timeIndex();
     for (label k = 0; k < n; ++k)
     {
@@ -247,8 +240,8 @@ void Foam::wallLinks::payAmongHolders
         }
         else
         {
-            unpaidMomentum[g] = carried*H;
-            unpaidMoment[g] = carried*HMoment;
+            unpaidMomentum.set(g, carried*H);
+            unpaidMoment.set(g, carried*HMoment);
         }
         historyMomentum_[g] = sum + carried*H;
         historyMoment_[g] = sumMoment + carried*HMoment;
