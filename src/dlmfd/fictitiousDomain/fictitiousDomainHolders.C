@@ -26,10 +26,20 @@ Foam::scalar Foam::fictitiousDomain::holderReach
 ) const
 {
     // A body's points lie within its bounding radius and reach() cells of
-    // it (with h, the mean size of its cells, at most the largest); the
-    // cells it held at the last step, a step's travel back, within one
-    // more cell (a body moving farther is refused in releasedDeviations)
-    return shape.boundingRadius() + (reach() + 1)*largestCellSize_;
+    // it (with h, the mean size of its cells, at most the largest), and
+    // its wall links within three faces of its cells; the cells it held at
+    // the last step, a step's travel back, within one more cell (a body
+    // moving farther is refused in releasedDeviations)
+    return shape.boundingRadius() + (holderCells() + 1)*largestCellSize_;
+}
+
+
+Foam::scalar Foam::fictitiousDomain::holderCells() const
+{
+    // With wall links, a fluid cell two faces from a body's cell may link
+    // through the body to its neighbour beyond (Foam::wallLinks): the rank
+    // of a cell three faces out needs the body
+    return hasWallLinks() ? max(reach(), scalar(3)) : reach();
 }
 
 
@@ -67,7 +77,7 @@ void Foam::fictitiousDomain::updateHolders()
 Foam::labelList Foam::fictitiousDomain::holderPartners() const
 {
     const label me = Pstream::myProcNo();
-    const scalar R = largestRadius_ + (reach() + 1)*largestCellSize_;
+    const scalar R = largestRadius_ + (holderCells() + 1)*largestCellSize_;
     const vector& period = images_.period();
     DynamicList<label> partners;
     for (label q = 0; q < Pstream::nProcs(); ++q)

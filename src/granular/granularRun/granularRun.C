@@ -54,16 +54,22 @@ Foam::autoPtr<Foam::granularSystem> Foam::granularRun::readScene
     granularSystem& granular = *scene;
 
     // Walls from the planar patches of a mesh, where asked for: the mesh
-    // is read for its geometry only
+    // is read for its geometry only (in parallel each rank's part of the
+    // decomposed mesh; planeWall::fromPatches sums each patch over them)
     if (granular.wantsWallPatches())
     {
-        if (Pstream::parRun())
+        const fileName meshDir
+        (
+            runTime_.path()/runTime_.constant()/polyMesh::meshSubDir
+        );
+        if (!isDir(meshDir))
         {
             FatalErrorInFunction
                 << "constant/collisionProperties: wallPatches takes the"
-                << " walls from the mesh, which a parallel granularFoam"
-                << " does not read; give the walls in walls { }"
-                << exit(FatalError);
+                << " walls from the mesh, but there is none at " << meshDir
+                << ": run blockMesh"
+                << (Pstream::parRun() ? ", then decomposePar," : "")
+                << " or give the walls in walls { }" << exit(FatalError);
         }
         if (log)
         {
