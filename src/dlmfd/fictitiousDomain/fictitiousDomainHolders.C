@@ -71,6 +71,7 @@ void Foam::fictitiousDomain::updateHolders()
     }
     reduce(largestCellSize_, maxOp<scalar>());
     holderPartners_ = holderPartners();
+    heldBy_.clear();
 }
 
 
@@ -100,19 +101,23 @@ Foam::labelList Foam::fictitiousDomain::holderPartners() const
 }
 
 
-void Foam::fictitiousDomain::holdersOf
+const Foam::List<Foam::labelList>& Foam::fictitiousDomain::holdersOf
 (
-    const UList<body>& bodies,
-    List<labelList>& holders,
-    labelList& partners
+    const UList<body>& bodies
 ) const
 {
+    if (heldBy_.foundFor(bodies))
+    {
+        return heldBy_.holders;
+    }
     const label me = Pstream::myProcNo();
 
     // Each body's holders, found alike by each of them; the ranks this
     // rank talks to are its partners by the boxes alone, so that a rank
     // that lacks a body another holds still answers (with records the
     // other finds wrong: a message, not a wait)
+    List<labelList>& holders = heldBy_.holders;
+    heldBy_.clear();
     holders.setSize(bodies.size());
     DynamicList<label> near;
     forAll(bodies, b)
@@ -156,7 +161,8 @@ void Foam::fictitiousDomain::holdersOf
             }
         }
     }
-    partners = holderPartners_;
+    heldBy_.keepKey(bodies);
+    return holders;
 }
 
 
@@ -194,16 +200,14 @@ void Foam::fictitiousDomain::shareAmongHolders
     const label me = Pstream::myProcNo();
     const label n = bodies.size();
 
-    List<labelList> holders;
-    labelList partnerRanks;
-    holdersOf(bodies, holders, partnerRanks);
+    const List<labelList>& holders = holdersOf(bodies);
     masterHolds.setSize(n);
     forAll(bodies, b)
     {
         masterHolds[b] = holders[b].found(0);
     }
     List<rankExchange::messages> m(1);
-    m[0].setRanks(partnerRanks);
+    m[0].setRanks(holderPartners_);
     const labelList& partners = m[0].ranks;
     forAll(bodies, b)
     {
@@ -311,11 +315,9 @@ void Foam::fictitiousDomain::sumAmongHolders
 
     // A record per body both ranks hold: its global index, the sender's
     // values, whether it has the values to share, and those
-    List<labelList> holders;
-    labelList partnerRanks;
-    holdersOf(bodies, holders, partnerRanks);
+    const List<labelList>& holders = holdersOf(bodies);
     List<rankExchange::messages> m(1);
-    m[0].setRanks(partnerRanks);
+    m[0].setRanks(holderPartners_);
     const labelList& partners = m[0].ranks;
     forAll(bodies, b)
     {

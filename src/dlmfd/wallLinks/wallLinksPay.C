@@ -174,7 +174,7 @@ void Foam::wallLinks::payAmongHolders
                 << " not in the list its links were found for (update)"
                 << exit(FatalError);
         }
-        has[k] = g < historyIndex_.size() && historyIndex_[g] == lastPayIndex_;
+        has[k] = historyIndex_[g] == lastPayIndex_;
         for (label i = 0; i < 3; ++i)
         {
             values[width*k + i] = gained[b][i];
@@ -207,8 +207,10 @@ void Foam::wallLinks::payAmongHolders
     unpaidMomentum.clear();
     unpaidMoment.clear();
     const label index = U.mesh().time().timeIndex();
+    const List<labelList>& holders = fd.holdersOf(held);
     for (label k = 0; k < n; ++k)
     {
+        const bool masterHolds = holders[k].found(0);
         const label g = bodyPlaces::global(held, k);
         const label b = places(g);
         const vector sum
@@ -230,7 +232,7 @@ void Foam::wallLinks::payAmongHolders
         );
         momentum[b] += gained[b];
         moment[b] += gained[nBodies + b];
-        if (fd.rankHolds(0, held[k]))
+        if (masterHolds)
         {
             if (Pstream::master())
             {
