@@ -244,4 +244,165 @@ TEST(boxDecomposition, neighboursAreSymmetricAndHoldEveryRankWithinReachOfTheBox
 }
 
 
+TEST(boxDecomposition, boxesCutAtGivenPlanesGiveTheRanksOfTheBruteForce)
+{
+    // Unequal boxes (a mesh decomposition's), periodic along x or not:
+    // each point's rank is the box that holds it (its image in the
+    // domain), the ranks within reach those of the brute force
+    const boundBox domain(point(0, -1, 0), point(2, 1, 1));
+    FixedList<scalarList, 3> planes;
+    planes[0] = scalarList({0, 0.3, 0.35, 1.2, 2});
+    planes[1] = scalarList({-1, 0.5, 1});
+    planes[2] = scalarList({0, 1});
+    for (const bool px : {false, true})
+    {
+        const FixedList<bool, 3> periodic({px, true, false});
+        const boxDecomposition boxes(domain, periodic, planes);
+        ASSERT_EQ(boxes.size(), 8);
+        EXPECT_EQ(boxes.n(), labelVector(4, 2, 1));
+        EXPECT_EQ(boxes.box(5), boundBox(point(0.3, 0.5, 0), point(0.35, 1, 1)));
+        Random rnd(23);
+        DynamicList<label> ranks;
+        label checked = 0;
+        for (label sample = 0; sample < 2000; ++sample)
+        {
+            point x =
+                domain.min()
+              + cmptMultiply(rnd.sample01<vector>(), domain.span());
+            if (px && sample % 4 == 0)
+            {
+                x.x() -= domain.span().x();
+            }
+            const label own = boxes.rankOf(x);
+            ASSERT_GE(own, 0) << where(x);
+            EXPECT_LT
+            (
+                bruteDistance(domain, periodic, boxes.box(own), x), 1e-12
+            ) << where(x);
+            const scalar reach = 0.02 + 0.4*rnd.sample01<scalar>();
+            boxes.ranksWithin(x, reach, ranks);
+            for (label r = 0; r < boxes.size(); ++r)
+            {
+                const scalar d =
+                    bruteDistance(domain, periodic, boxes.box(r), x);
+                if (mag(d - reach) < 1e-12)
+                {
+                    continue;
+                }
+                EXPECT_EQ(ranks.found(r), d < reach)
+                    << "rank " << r << " at " << d << " from " << where(x);
+                ++checked;
+            }
+        }
+        EXPECT_GT(checked, 15000);
+        // A plane belongs to the box above it
+        EXPECT_EQ(boxes.rankOf(point(0.35, -1, 0.5)), 2);
+        EXPECT_EQ(boxes.rankOf(point(2, 0.7, 0.5)), px ? 4 : 7);
+    }
+    // Planes that do not ascend from the domain's start to its end
+    FixedList<scalarList, 3> bad(planes);
+    bad[0] = scalarList({0, 0.5, 0.5, 2});
+    EXPECT_THROW
+    (
+        boxDecomposition(domain, FixedList<bool, 3>(false), bad), Foam::error
+    );
+    bad[0] = scalarList({0, 0.5, 1.9});
+    EXPECT_THROW
+    (
+        boxDecomposition(domain, FixedList<bool, 3>(false), bad), Foam::error
+    );
+}
+
+
+TEST(boxDecomposition, theGridOfAMeshDecompositionIsFoundAndOthersAreNot)
+{
+    // A simple decomposition's ranks (x fastest) over unequal slabs, their
+    // faces off by round-off: the grid, its boxes the ranks' own
+    const boundBox domain(point(0, 0, 0), point(4, 2, 2));
+    const FixedList<bool, 3> periodic({true, false, true});
+    const scalarList xs({0, 1.25, 2, 3.1, 4}), ys({0, 1, 2}), zs({0, 0.9, 2});
+    List<boundBox> rankBoxes;
+    for (label k = 0; k < 2; ++k)
+    for (label j = 0; j < 2; ++j)
+    for (label i = 0; i < 4; ++i)
+    {
+        rankBoxes.append
+        (
+            boundBox
+            (
+                point(xs[i], ys[j], zs[k] + 1e-12),
+                point(xs[i + 1] - 1e-12, ys[j + 1], zs[k + 1])
+            )
+        );
+    }
+    const autoPtr<boxDecomposition> grid
+    (
+        boxDecomposition::fromRankBoxes(domain, periodic, rankBoxes)
+    );
+    ASSERT_TRUE(grid.valid());
+    EXPECT_EQ(grid->n(), labelVector(4, 2, 2));
+    forAll(rankBoxes, r)
+    {
+        EXPECT_LT(mag(grid->box(r).min() - rankBoxes[r].min()), 1e-11) << r;
+        EXPECT_LT(mag(grid->box(r).max() - rankBoxes[r].max()), 1e-11) << r;
+        EXPECT_EQ(grid->rankOf(rankBoxes[r].centre()), r);
+    }
+
+    // Not found: the ranks numbered z fastest, a box missing, two ranks
+    // that are not a grid (one box cut across the other's plane), a box
+    // outside the domain
+    List<boundBox> swapped(rankBoxes);
+    std::swap(swapped[1], swapped[8]);
+    EXPECT_FALSE
+    (
+        boxDecomposition::fromRankBoxes(domain, periodic, swapped).valid()
+    );
+    List<boundBox> fewer(SubList<boundBox>(rankBoxes, 15));
+    EXPECT_FALSE
+    (
+        boxDecomposition::fromRankBoxes(domain, periodic, fewer).valid()
+    );
+    const List<boundBox> notGrid
+    ({
+        boundBox(point(0, 0, 0), point(1, 2, 2)),
+        boundBox(point(1, 0, 0), point(4, 1, 2)),
+        boundBox(point(1, 1, 0), point(4, 2, 2)),
+        boundBox(point(0, 0, 0), point(1, 1, 2))
+    });
+    EXPECT_FALSE
+    (
+        boxDecomposition::fromRankBoxes(domain, periodic, notGrid).valid()
+    );
+    List<boundBox> outside(rankBoxes);
+    outside[15].max().x() = 4.5;
+    EXPECT_FALSE
+    (
+        boxDecomposition::fromRankBoxes(domain, periodic, outside).valid()
+    );
+}
+
+
+TEST(boxDecomposition, theLeastAreaFactorsTakeTheFirstOfEqualsAndOneBoxAcrossAFlatDomain)
+{
+    // A cube on 16 ranks: 2 x 2 x 4, 2 x 4 x 2 and 4 x 2 x 2 cut as much;
+    // the first found (x fewest) is taken
+    EXPECT_EQ
+    (
+        boxDecomposition::leastAreaBoxes(vector(1, 1, 1), 16),
+        labelVector(2, 2, 4)
+    );
+    EXPECT_EQ
+    (
+        boxDecomposition::leastAreaBoxes(vector(16, 2, 2), 8),
+        labelVector(8, 1, 1)
+    );
+    // One cell deep along z: never cut there
+    EXPECT_EQ
+    (
+        boxDecomposition::leastAreaBoxes(vector(4, 4, 0.01), 4),
+        labelVector(2, 2, 1)
+    );
+}
+
+
 // ************************************************************************* //

@@ -183,36 +183,37 @@ void Foam::dlmfdCoupling::setOwned(const sceneEffects& effects)
             << " particleDistribution master" << exit(FatalError);
     }
 
-    // The boxes: the factors of the number of ranks that cut the domain
-    // with the least area between boxes (one box along a direction that
-    // is one cell deep: a 2D case)
-    const label P = Pstream::nProcs();
-    const vector L = granular_.domain().span();
-    labelVector n(P, 1, 1);
-    scalar least = VGREAT;
-    for (label nx = 1; nx <= P; ++nx)
-    {
-        for (label ny = 1; nx*ny <= P; ++ny)
-        {
-            if (P % (nx*ny))
-            {
-                continue;
-            }
-            const label nz = P/(nx*ny);
-            const scalar area =
-                (nx - 1)*L.y()*L.z() + (ny - 1)*L.x()*L.z()
-              + (nz - 1)*L.x()*L.y();
-            if (area < least)
-            {
-                least = area;
-                n = labelVector(nx, ny, nz);
-            }
-        }
-    }
-    boxes_.reset
+    // The boxes: the mesh's decomposition where its ranks' cells make a
+    // grid of boxes numbered x fastest (simple, hierarchical xyz), so that
+    // a particle's owner is the rank its centre's cell is on; else the
+    // factors of the number of ranks that cut the domain with the least
+    // area between boxes (one box along a direction that is one cell
+    // deep: a 2D case), which need not follow the cells: more bodies then
+    // travel to ranks whose cells are far from them
+    List<boundBox> meshBoxes(Pstream::nProcs());
+    meshBoxes[Pstream::myProcNo()] = boundBox(mesh_.points(), false);
+    Pstream::gatherList(meshBoxes);
+    Pstream::scatterList(meshBoxes);
+    boxes_ = boxDecomposition::fromRankBoxes
     (
-        new boxDecomposition(granular_.domain(), granular_.periodic(), n)
+        granular_.domain(), granular_.periodic(), meshBoxes
     );
+    const bool fromMesh = boxes_.valid();
+    if (!fromMesh)
+    {
+        boxes_.reset
+        (
+            new boxDecomposition
+            (
+                granular_.domain(), granular_.periodic(),
+                boxDecomposition::leastAreaBoxes
+                (
+                    granular_.domain().span(), Pstream::nProcs()
+                )
+            )
+        );
+    }
+    const labelVector& n = boxes_->n();
 
     // This rank's part: the scene read again, then kept to its box
     part_.reset
@@ -248,6 +249,19 @@ void Foam::dlmfdCoupling::setOwned(const sceneEffects& effects)
     Info<< "Particle distribution: owned, " << n.x() << " x " << n.y()
         << " x " << n.z() << " boxes of the collision domain; each rank"
         << " moves the particles in its box" << nl;
+    if (fromMesh)
+    {
+        Info<< "    the boxes are the mesh decomposition's: each particle is"
+            << " owned by the rank of the cell its centre lies in" << nl;
+    }
+    else
+    {
+        Info<< "    the mesh decomposition's ranks do not make a grid of"
+            << " boxes numbered x fastest (decomposeParDict: method simple,"
+            << " or hierarchical with order xyz, do): the boxes cut the"
+            << " domain evenly and a particle's owner may not be the rank"
+            << " of its cell, which sends more bodies between ranks" << nl;
+    }
 }
 
 

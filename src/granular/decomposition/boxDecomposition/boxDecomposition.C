@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "boxDecomposition.H"
+#include <algorithm>
 #include "error.H"
 
 #include <cmath>
@@ -36,7 +37,15 @@ Foam::label Foam::boxDecomposition::slab
         return -1;
     }
     // [lo, hi) per box, the last one closed
-    return min(label(s*n_[d]), n_[d] - 1);
+    if (planes_[d].empty())
+    {
+        return min(label(s*n_[d]), n_[d] - 1);
+    }
+    // The planes inside the domain at or below x (wrapped)
+    const scalarList& p = planes_[d];
+    const scalar w = periodic_[d] ? lo + s*L : x;
+    const label above = std::upper_bound(p.cbegin() + 1, p.cend() - 1, w) - p.cbegin();
+    return above - 1;
 }
 
 
@@ -46,6 +55,10 @@ Foam::scalar Foam::boxDecomposition::edge
     const label s
 ) const
 {
+    if (!planes_[d].empty())
+    {
+        return planes_[d][s];
+    }
     const scalar lo = domain_.min()[d];
     return lo + (domain_.max()[d] - lo)*s/n_[d];
 }
@@ -163,7 +176,154 @@ Foam::boxDecomposition::boxDecomposition
 }
 
 
+Foam::boxDecomposition::boxDecomposition
+(
+    const boundBox& domain,
+    const FixedList<bool, 3>& periodic,
+    const FixedList<scalarList, 3>& planes
+)
+:
+    boxDecomposition
+    (
+        domain,
+        periodic,
+        labelVector
+        (
+            planes[0].size() - 1, planes[1].size() - 1, planes[2].size() - 1
+        )
+    )
+{
+    planes_ = planes;
+    for (direction d = 0; d < 3; ++d)
+    {
+        const scalarList& p = planes_[d];
+        bool ascending = true;
+        for (label s = 1; s < p.size(); ++s)
+        {
+            ascending = ascending && p[s] > p[s - 1];
+        }
+        if
+        (
+            !ascending
+         || p.first() != domain_.min()[d] || p.last() != domain_.max()[d]
+        )
+        {
+            FatalErrorInFunction
+                << "planes " << p << " along direction " << label(d)
+                << " must ascend from the domain's start "
+                << domain_.min()[d] << " to its end " << domain_.max()[d]
+                << exit(FatalError);
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
+
+Foam::autoPtr<Foam::boxDecomposition> Foam::boxDecomposition::fromRankBoxes
+(
+    const boundBox& domain,
+    const FixedList<bool, 3>& periodic,
+    const UList<boundBox>& rankBoxes
+)
+{
+    // The planes: every rank box's faces along each direction, those
+    // within the tolerance of another merged (the domain's ends exact)
+    FixedList<scalarList, 3> planes;
+    for (direction d = 0; d < 3; ++d)
+    {
+        const scalar lo = domain.min()[d], hi = domain.max()[d];
+        const scalar tol = 1e-6*(hi - lo);
+        DynamicList<scalar> faces(2*rankBoxes.size());
+        for (const boundBox& bb : rankBoxes)
+        {
+            faces.append(bb.min()[d]);
+            faces.append(bb.max()[d]);
+        }
+        Foam::sort(faces);
+        DynamicList<scalar> p;
+        for (const scalar f : faces)
+        {
+            if (f < lo - tol || f > hi + tol)
+            {
+                return nullptr;
+            }
+            if (p.empty() || f > p.last() + tol)
+            {
+                p.append(f);
+            }
+        }
+        if (p.size() < 2 || mag(p.first() - lo) > tol || mag(p.last() - hi) > tol)
+        {
+            return nullptr;
+        }
+        p.first() = lo;
+        p.last() = hi;
+        planes[d] = std::move(p);
+    }
+    const label nBoxes =
+        (planes[0].size() - 1)*(planes[1].size() - 1)*(planes[2].size() - 1);
+    if (nBoxes != rankBoxes.size())
+    {
+        return nullptr;
+    }
+    autoPtr<boxDecomposition> grid
+    (
+        new boxDecomposition(domain, periodic, planes)
+    );
+    forAll(rankBoxes, r)
+    {
+        const boundBox b(grid->box(r));
+        for (direction d = 0; d < 3; ++d)
+        {
+            const scalar tol = 1e-6*(domain.max()[d] - domain.min()[d]);
+            if
+            (
+                mag(b.min()[d] - rankBoxes[r].min()[d]) > tol
+             || mag(b.max()[d] - rankBoxes[r].max()[d]) > tol
+            )
+            {
+                return nullptr;
+            }
+        }
+    }
+    return grid;
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::labelVector Foam::boxDecomposition::leastAreaBoxes
+(
+    const vector& span,
+    const label nBoxes
+)
+{
+    const vector& L = span;
+    labelVector n(nBoxes, 1, 1);
+    scalar least = VGREAT;
+    for (label nx = 1; nx <= nBoxes; ++nx)
+    {
+        for (label ny = 1; nx*ny <= nBoxes; ++ny)
+        {
+            if (nBoxes % (nx*ny))
+            {
+                continue;
+            }
+            const label nz = nBoxes/(nx*ny);
+            const scalar area =
+                (nx - 1)*L.y()*L.z() + (ny - 1)*L.x()*L.z()
+              + (nz - 1)*L.x()*L.y();
+            if (area < least)
+            {
+                least = area;
+                n = labelVector(nx, ny, nz);
+            }
+        }
+    }
+    return n;
+}
+
 
 Foam::boundBox Foam::boxDecomposition::box(const label r) const
 {
