@@ -246,6 +246,7 @@ void Foam::dlmfdCoupling::setOwned(const sceneEffects& effects)
             max(largestRadius, granular_.particle(i).shape().boundingRadius());
     }
     fd_.setBodiesPerRank(std::move(ownerBoxes), largestRadius);
+    listNearAtStart();
     Info<< "Particle distribution: owned, " << n.x() << " x " << n.y()
         << " x " << n.z() << " boxes of the collision domain; each rank"
         << " moves the particles in its box" << nl;

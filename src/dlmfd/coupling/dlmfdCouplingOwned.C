@@ -88,6 +88,41 @@ const Foam::fictitiousDomain::body& Foam::dlmfdCoupling::ownBody
 }
 
 
+void Foam::dlmfdCoupling::listNearAtStart()
+{
+    if (mesh_.dynamic())
+    {
+        // A mesh that changes sends every state to every rank (sendStates)
+        allFresh_ = true;
+        return;
+    }
+    // What sendStates sends a rank after a step: the particles whose
+    // holder reach and twice a step's travel come near its cells, and
+    // those that may enter its box in the next step; the whole scene read
+    // at the start looked through once, so that no step does
+    const label me = Pstream::myProcNo();
+    const scalar dt = mesh_.time().deltaTValue();
+    fresh_.clear();
+    DynamicList<label> owners;
+    for (label g = 0; g < granular_.size(); ++g)
+    {
+        const rigidParticle& p = granular_.particle(g);
+        const scalar next = 2*dt*(mag(p.velocity()) + 2*dt*mag(g_));
+        const scalar reach = fd_.holderReach(p.shape()) + next;
+        boxes_->ranksWithin(p.position(), next, owners);
+        if
+        (
+            owners.found(me)
+         || fd_.rankNearBox(me, boundBox(p.position(), p.position()), reach)
+        )
+        {
+            fresh_.append(g);
+        }
+    }
+    allFresh_ = false;
+}
+
+
 Foam::labelList Foam::dlmfdCoupling::statePartners(const scalar reach) const
 {
     // The ranks whose cells come near this rank's box, or whose box this

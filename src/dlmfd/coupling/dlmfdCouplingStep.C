@@ -372,7 +372,7 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
             links_.payAmongHolders
             (
                 U, dt, ddtCoeff(U), fd_, solved, linkMomentum, linkMoment,
-                unpaid, unpaidMoment
+                unpaid, unpaidMoment, n
             );
             fd_.setMasterShare(std::move(unpaid), std::move(unpaidMoment));
         }

@@ -64,7 +64,7 @@ Foam::List<Foam::vector> Foam::wallLinks::gainedAtLinks
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::wallLinks::sizeHistory(const label nBodies)
+void Foam::wallLinks::sizeHistory(const label nBodies, const label nScene)
 {
     if (globalOf_.size() != nBodies)
     {
@@ -73,13 +73,16 @@ void Foam::wallLinks::sizeHistory(const label nBodies)
             << " found (update) for " << globalOf_.size()
             << exit(FatalError);
     }
-    if (globalOf_.empty())
+    // A restart's history is one per particle, by global index; a body
+    // added later starts without one (known: it is zero). With bodies per
+    // rank every particle of the scene from the first step on: a body that
+    // comes near later has its history from its holders, not a zero
+    const label nGlobal =
+        max(globalOf_.empty() ? label(0) : max(globalOf_) + 1, nScene);
+    if (nGlobal == 0)
     {
         return;
     }
-    // A restart's history is one per particle, by global index; a body
-    // added later starts without one (known: it is zero)
-    const label nGlobal = max(globalOf_) + 1;
     if (historyMomentum_.size() < nGlobal)
     {
         historyMomentum_.setSize(nGlobal, Zero);
@@ -145,12 +148,13 @@ void Foam::wallLinks::payAmongHolders
     List<vector>& momentum,
     List<vector>& moment,
     Map<vector>& unpaidMomentum,
-    Map<vector>& unpaidMoment
+    Map<vector>& unpaidMoment,
+    const label nScene
 )
 {
     const label me = Pstream::myProcNo();
     const label nBodies = momentum.size();
-    sizeHistory(nBodies);
+    sizeHistory(nBodies, nScene);
     const List<vector> gained(gainedAtLinks(U, dt, ddtCoeff));
 
     // Per body this rank holds: its gain here, summed over the holders as
@@ -255,7 +259,10 @@ void Foam::wallLinks::payAmongHolders
     // its owner (the others give exact zeros)
     if (U.mesh().time().writeTime())
     {
-        const label nGlobal = historyMomentum_.size();
+        // (each rank's history reaches the largest global index it has
+        // held: the ranks agree on the longest)
+        const label nGlobal =
+            returnReduce(historyMomentum_.size(), maxOp<label>());
         List<vector> all(2*nGlobal, Zero);
         for (label k = 0; k < n; ++k)
         {
