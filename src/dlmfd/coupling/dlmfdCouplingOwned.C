@@ -101,13 +101,12 @@ void Foam::dlmfdCoupling::listNearAtStart()
     // those that may enter its box in the next step; the whole scene read
     // at the start looked through once, so that no step does
     const label me = Pstream::myProcNo();
-    const scalar dt = mesh_.time().deltaTValue();
     fresh_.clear();
     DynamicList<label> owners;
     for (label g = 0; g < granular_.size(); ++g)
     {
         const rigidParticle& p = granular_.particle(g);
-        const scalar next = 2*dt*(mag(p.velocity()) + 2*dt*mag(g_));
+        const scalar next = nextStepTravel(p);
         const scalar reach = fd_.holderReach(p.shape()) + next;
         boxes_->ranksWithin(p.position(), next, owners);
         if
@@ -120,6 +119,16 @@ void Foam::dlmfdCoupling::listNearAtStart()
         }
     }
     allFresh_ = false;
+}
+
+
+Foam::scalar Foam::dlmfdCoupling::nextStepTravel
+(
+    const rigidParticle& p
+) const
+{
+    const scalar dt = mesh_.time().deltaTValue();
+    return 2*dt*(mag(p.velocity()) + 2*dt*mag(g_));
 }
 
 
@@ -164,7 +173,6 @@ void Foam::dlmfdCoupling::sendStates
     // longer next step; a rank the state misses stops the next step's
     // exchange of cell sums)
     const label me = Pstream::myProcNo();
-    const scalar dt = mesh_.time().deltaTValue();
     const granularSystem& part = *part_;
     List<List<labelList>> sendTo(1, List<labelList>(part.size()));
     if (mesh_.dynamic())
@@ -202,7 +210,7 @@ void Foam::dlmfdCoupling::sendStates
         const fictitiousDomain::body& B = ownBody(bodies, places, i);
         const scalar moved =
             mag(granular_.separation(p.position(), B.centre));
-        const scalar next = 2*dt*(mag(p.velocity()) + 2*dt*mag(g_));
+        const scalar next = nextStepTravel(p);
         const scalar reach = fd_.holderReach(p.shape()) + moved + next;
         farthest = max(farthest, reach);
         fd_.ranksNear(p.position(), reach, near);

@@ -229,11 +229,11 @@ Foam::autoPtr<Foam::boxDecomposition> Foam::boxDecomposition::fromRankBoxes
 {
     // The planes: every rank box's faces along each direction, those
     // within the tolerance of another merged (the domain's ends exact)
+    const vector tol(1e-6*domain.span());
     FixedList<scalarList, 3> planes;
     for (direction d = 0; d < 3; ++d)
     {
         const scalar lo = domain.min()[d], hi = domain.max()[d];
-        const scalar tol = 1e-6*(hi - lo);
         DynamicList<scalar> faces(2*rankBoxes.size());
         for (const boundBox& bb : rankBoxes)
         {
@@ -244,16 +244,21 @@ Foam::autoPtr<Foam::boxDecomposition> Foam::boxDecomposition::fromRankBoxes
         DynamicList<scalar> p;
         for (const scalar f : faces)
         {
-            if (f < lo - tol || f > hi + tol)
+            if (f < lo - tol[d] || f > hi + tol[d])
             {
                 return nullptr;
             }
-            if (p.empty() || f > p.last() + tol)
+            if (p.empty() || f > p.last() + tol[d])
             {
                 p.append(f);
             }
         }
-        if (p.size() < 2 || mag(p.first() - lo) > tol || mag(p.last() - hi) > tol)
+        if
+        (
+            p.size() < 2
+         || mag(p.first() - lo) > tol[d]
+         || mag(p.last() - hi) > tol[d]
+        )
         {
             return nullptr;
         }
@@ -276,11 +281,10 @@ Foam::autoPtr<Foam::boxDecomposition> Foam::boxDecomposition::fromRankBoxes
         const boundBox b(grid->box(r));
         for (direction d = 0; d < 3; ++d)
         {
-            const scalar tol = 1e-6*(domain.max()[d] - domain.min()[d]);
             if
             (
-                mag(b.min()[d] - rankBoxes[r].min()[d]) > tol
-             || mag(b.max()[d] - rankBoxes[r].max()[d]) > tol
+                mag(b.min()[d] - rankBoxes[r].min()[d]) > tol[d]
+             || mag(b.max()[d] - rankBoxes[r].max()[d]) > tol[d]
             )
             {
                 return nullptr;
