@@ -44,3 +44,15 @@ def machine_description(extra=()):
     lines.append(f"commit: {commit or 'unknown'}")
     lines.extend(extra)
     return "\n".join(lines) + "\n"
+
+
+def load_script(path, name):
+    """Another benchmark's script (a file without .py) as a module, to use
+    its case set-up rather than write it again"""
+    import importlib.machinery
+    import importlib.util
+    loader = importlib.machinery.SourceFileLoader(name, path)
+    spec = importlib.util.spec_from_loader(name, loader)
+    module = importlib.util.module_from_spec(spec)
+    loader.exec_module(module)
+    return module
