@@ -19,7 +19,7 @@ tutorials = {"sphere": "periodicSuspensionSpheres", "cube": "periodicSuspensionC
 quantities = ["bodies in the list", "bodies with cells here", "their cells", "bodies solved", "messages received",
               "bytes received", "state messages per step", "state bytes per step"]
 # simple decomposition along x, then y, then z
-splits = {2: "(2 1 1)", 4: "(2 2 1)", 8: "(2 2 2)", 16: "(4 2 2)", 32: "(4 4 2)"}
+splits = {2: "(2 1 1)", 4: "(2 2 1)", 8: "(2 2 2)", 16: "(4 2 2)", 27: "(3 3 3)", 32: "(4 4 2)", 64: "(4 4 4)"}
 PHASES = ["fluid", "DLM/FD", "granular", "communication", "output"]
 
 
