@@ -44,16 +44,14 @@ Foam::IOobject constantDict(const Foam::fvMesh& mesh, const Foam::word& name)
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::scalar Foam::dlmfdCoupling::densityRatio(const label i) const
+Foam::scalar Foam::dlmfdCoupling::densityRatio(const rigidParticle& p) const
 {
-    const rigidParticle& p = granular_.particle(i);
     return p.mass()/(rhoFluid_*p.shape().volume());
 }
 
 
-Foam::tensor Foam::dlmfdCoupling::volumeInertia(const label i) const
+Foam::tensor Foam::dlmfdCoupling::volumeInertia(const rigidParticle& p)
 {
-    const rigidParticle& p = granular_.particle(i);
     const tensor R = p.R();
     return R & p.shape().volumeInertia() & R.T();
 }
@@ -138,7 +136,11 @@ void Foam::dlmfdCoupling::setPeriodicity()
 }
 
 
-Foam::fileName Foam::dlmfdCoupling::readParticles(granularSystem& into)
+Foam::fileName Foam::dlmfdCoupling::readParticles
+(
+    granularSystem& into,
+    const bool masterOnly
+)
 {
     // Written by the solver (processor0's in parallel), else the case's
     // own, by hand or by placeParticles
@@ -160,11 +162,21 @@ Foam::fileName Foam::dlmfdCoupling::readParticles(granularSystem& into)
                 << "    Place particles with placeParticles, or copy them"
                 << " from 0.orig" << exit(FatalError);
         }
-        dict = particleFileReader::read(file);
+        if (masterOnly)
+        {
+            into.readParticles(file);
+        }
+        else
+        {
+            dict = particleFileReader::read(file);
+        }
     }
     Pstream::scatter(file);
-    Pstream::scatter(dict);
-    into.readParticles(dict, file);
+    if (!masterOnly)
+    {
+        Pstream::scatter(dict);
+        into.readParticles(dict, file);
+    }
     return file;
 }
 
@@ -215,7 +227,24 @@ void Foam::dlmfdCoupling::setOwned(const sceneEffects& effects)
     }
     const labelVector& n = boxes_->n();
 
-    // This rank's part: the scene read again, then kept to its box
+    // Each rank's fictitious domain takes the bodies near its cells and
+    // its own
+    List<boundBox> ownerBoxes(Pstream::nProcs());
+    forAll(ownerBoxes, r)
+    {
+        ownerBoxes[r] = boxes_->bounds(r);
+    }
+    scalar largestRadius = 0;
+    for (label i = 0; i < scene().size(); ++i)
+    {
+        largestRadius =
+            max(largestRadius, scene().particle(i).shape().boundingRadius());
+    }
+    Pstream::scatter(largestRadius);
+    fd_.setBodiesPerRank(std::move(ownerBoxes), largestRadius);
+
+    // This rank's part and mirror: its own particles and those its first
+    // step lists, from the master's reading
     part_.reset
     (
         new granularSystem
@@ -228,25 +257,23 @@ void Foam::dlmfdCoupling::setOwned(const sceneEffects& effects)
     part_->addWallPatches(mesh_);
     part_->readGravity(mesh_);
     part_->setGravity(Zero);
-    readParticles(part_());
     UPtrList<granularSystem> parts(1);
     parts.set(0, part_.get());
+    {
+        const List<List<granularSystem::particleRecord>> near
+        (
+            ownedGranularSteps::scatterScene
+            (
+                exchange_, *boxes_,
+                Pstream::master() ? whole_.get() : nullptr,
+                Pstream::master() ? destinationsAtStart() : List<labelList>(),
+                parts
+            )
+        );
+        granular_.setScene(granular_.localConstants());
+        setMirror(near[0]);
+    }
     owned_.reset(new ownedGranularSteps(std::move(parts), *boxes_, exchange_));
-    // Each rank's fictitious domain takes the bodies near its cells and
-    // its own
-    List<boundBox> ownerBoxes(Pstream::nProcs());
-    forAll(ownerBoxes, r)
-    {
-        ownerBoxes[r] = boxes_->bounds(r);
-    }
-    scalar largestRadius = 0;
-    for (label i = 0; i < granular_.size(); ++i)
-    {
-        largestRadius =
-            max(largestRadius, granular_.particle(i).shape().boundingRadius());
-    }
-    fd_.setBodiesPerRank(std::move(ownerBoxes), largestRadius);
-    listNearAtStart();
     Info<< "Particle distribution: owned, " << n.x() << " x " << n.y()
         << " x " << n.z() << " boxes of the collision domain; each rank"
         << " moves the particles in its box" << nl;
@@ -277,9 +304,10 @@ void Foam::dlmfdCoupling::checkPlanarParticles(const fileName& file) const
     const scalar zMin = mesh_.bounds().min().z();
     const scalar zMax = mesh_.bounds().max().z();
     problemList problems;
-    for (label i = 0; i < granular_.size(); ++i)
+    const granularSystem& all = scene();
+    for (label i = 0; i < all.size(); ++i)
     {
-        const rigidParticle& p = granular_.particle(i);
+        const rigidParticle& p = all.particle(i);
         const bool planar = p.shape().planar();
         const scalar z = p.position().z();
         if (planar && z >= zMin && z <= zMax)
@@ -287,7 +315,7 @@ void Foam::dlmfdCoupling::checkPlanarParticles(const fileName& file) const
             continue;
         }
         OStringStream os;
-        os  << "particle " << granular_.id(i) << " (" << p.shape().name()
+        os  << "particle " << all.id(i) << " (" << p.shape().name()
             << ", " << p.shape().type() << ") at " << p.position();
         if (!planar)
         {
@@ -380,6 +408,9 @@ Foam::dlmfdCoupling::dlmfdCoupling
         IOdictionary(constantDict(mesh, "collisionProperties")),
         effects
     ),
+    fresh_(),
+    whole_(),
+    nParticles_(0),
     part_(),
     boxes_(),
     exchange_(),
@@ -473,9 +504,32 @@ Foam::dlmfdCoupling::dlmfdCoupling
     // Periodic directions, as the mesh's cyclics and the domain say
     setPeriodicity();
 
-    const fileName particleFile(readParticles(granular_));
-    checkPlanarParticles(particleFile);
+    // With owned particles the master alone reads the scene, into whole_,
+    // and hands each rank its own particles and those near it (setOwned)
     if (granular_.ownedDistribution())
+    {
+        whole_.reset
+        (
+            new granularSystem
+            (
+                IOdictionary(constantDict(mesh, "particleProperties")),
+                IOdictionary(constantDict(mesh, "collisionProperties")),
+                effects
+            )
+        );
+        whole_->addWallPatches(mesh);
+        whole_->readGravity(mesh);
+        whole_->setGravity(Zero);
+    }
+    const fileName particleFile
+    (
+        whole_.valid()
+      ? readParticles(*whole_, true)
+      : readParticles(granular_)
+    );
+    nParticles_ = returnReduce(scene().size(), maxOp<label>());
+    checkPlanarParticles(particleFile);
+    if (whole_.valid())
     {
         setOwned(effects);
     }
@@ -488,8 +542,8 @@ Foam::dlmfdCoupling::dlmfdCoupling
     {
         fd_.discardStoredState(particleFile);
     }
-    Fh_.setSize(granular_.size(), Zero);
-    Th_.setSize(granular_.size(), Zero);
+    Fh_.setSize(nParticles_, Zero);
+    Th_.setSize(nParticles_, Zero);
 
     // The scales of seed 001 for each particle, when the fluid is
     // Newtonian: u_g = sqrt(|m - 1| g D), t_g = D/u_g, Ga = u_g D/nu
@@ -502,16 +556,19 @@ Foam::dlmfdCoupling::dlmfdCoupling
         }
     }
 
-    Info<< "DLM/FD: " << granular_.size() << " particles from "
+    // (the whole scene: on the master alone with owned particles, which
+    // stops the run for all)
+    Info<< "DLM/FD: " << nParticles_ << " particles from "
         << particleFile << ", fluid density " << rhoFluid_ << " kg/m^3"
         << nl;
-    for (label i = 0; i < granular_.size(); ++i)
+    const granularSystem& all = scene();
+    for (label i = 0; i < all.size(); ++i)
     {
-        const rigidParticle& p = granular_.particle(i);
-        const scalar m = densityRatio(i);
+        const rigidParticle& p = all.particle(i);
+        const scalar m = densityRatio(p);
         const scalar D = p.shape().equivalentDiameter();
         const scalar ug = std::sqrt(mag(m - 1)*mag(g_)*D);
-        Info<< "    particle " << granular_.id(i) << ": "
+        Info<< "    particle " << all.id(i) << ": "
             << p.shape().name() << " (" << p.shape().type() << ", D = "
             << D << " m), m = " << m << ", "
             << rigidParticle::motionKindNames[p.motion()];
@@ -524,7 +581,7 @@ Foam::dlmfdCoupling::dlmfdCoupling
         if (p.motion() == rigidParticle::motionKind::free && !(m > 0))
         {
             FatalErrorInFunction
-                << "particle " << granular_.id(i) << ": density ratio "
+                << "particle " << all.id(i) << ": density ratio "
                 << m << " is not allowed; it must be > 0"
                 << exit(FatalError);
         }
@@ -539,15 +596,15 @@ Foam::dlmfdCoupling::dlmfdCoupling
         )
         {
             FatalErrorInFunction
-                << "particle " << granular_.id(i) << ": density ratio " << m
+                << "particle " << all.id(i) << ": density ratio " << m
                 << " is not allowed with constant/dlmfdProperties"
                 << " fictitiousDomain/fluidStepForce penalty; a free"
                 << " particle needs m >= 2 there (fixed and prescribed ones"
                 << " any m), or fluidStepForce multipliers" << exit(FatalError);
         }
     }
-    Info<< "    walls " << granular_.walls().size() << ", contact law "
-        << "sub-step T_c/N = " << granular_.maxSubStep() << " s" << nl
+    Info<< "    walls " << all.walls().size() << ", contact law "
+        << "sub-step T_c/N = " << all.maxSubStep() << " s" << nl
         << "    coupling: " << fd_.describe().c_str() << nl
         << "    fluid step held by "
         << (penalty_.on()
@@ -558,7 +615,7 @@ Foam::dlmfdCoupling::dlmfdCoupling
         << (owned_ ? "every one of " : Pstream::parRun() ? "the master of " : "")
         << (Pstream::parRun() ? Foam::name(Pstream::nProcs()) + " ranks" : "serial")
         << nl;
-    granular_.effects().report(Info);
+    all.effects().report(Info);
     Info<< endl;
 
     // On a mesh whose cells may change, before anything is written
@@ -604,13 +661,12 @@ void Foam::dlmfdCoupling::write()
     }
     if (owned_)
     {
-        // The contact histories from their owners (the states are the
-        // mirror's already)
-        owned_->gatherScene(Pstream::master() ? &granular_ : nullptr);
+        // The states and the contact histories from their owners
+        owned_->gatherScene(Pstream::master() ? whole_.get() : nullptr);
     }
     if (Pstream::master())
     {
-        granular_.writeParticles(runTime.timePath()/"uniform");
+        scene().writeParticles(runTime.timePath()/"uniform");
     }
     writeVTK();
 }
@@ -625,7 +681,7 @@ void Foam::dlmfdCoupling::writeVTK()
     }
     else if (Pstream::master())
     {
-        vtk_.write(granular_, runTime.value(), runTime.timeIndex());
+        vtk_.write(scene(), runTime.value(), runTime.timeIndex());
     }
 }
 

@@ -47,21 +47,23 @@ Foam::dlmfdCoupling::bodiesHeld
 }
 
 
-bool Foam::dlmfdCoupling::isFresh(const label g) const
+Foam::label Foam::dlmfdCoupling::mirrorPlace(const label g) const
 {
-    return allFresh_ || findSortedIndex(fresh_, g) >= 0;
+    return owned_ ? findSortedIndex(fresh_, g) : g;
 }
 
 
-Foam::label Foam::dlmfdCoupling::listedCount() const
+void Foam::dlmfdCoupling::setMirror
+(
+    const UList<granularSystem::particleRecord>& records
+)
 {
-    return owned_ && !allFresh_ ? fresh_.size() : granular_.size();
-}
-
-
-Foam::label Foam::dlmfdCoupling::listedParticle(const label k) const
-{
-    return owned_ && !allFresh_ ? fresh_[k] : k;
+    granular_.setParticles(records, boolList(records.size(), false), nullptr);
+    fresh_.resize(records.size());
+    forAll(records, k)
+    {
+        fresh_[k] = records[k].global;
+    }
 }
 
 
@@ -77,7 +79,7 @@ const Foam::fictitiousDomain::body& Foam::dlmfdCoupling::ownBody
     if (k < 0)
     {
         FatalErrorInFunction
-            << "Particle " << granular_.id(g) << " (global index " << g
+            << "Particle " << part_->id(i) << " (global index " << g
             << ") is owned by rank " << Pstream::myProcNo() << " but is not"
             << " in the rank's list of bodies: its state was not the last"
             << " step's here (a rank is sent the state of each particle that"
@@ -88,37 +90,45 @@ const Foam::fictitiousDomain::body& Foam::dlmfdCoupling::ownBody
 }
 
 
-void Foam::dlmfdCoupling::listNearAtStart()
+Foam::List<Foam::labelList> Foam::dlmfdCoupling::destinationsAtStart() const
 {
+    // What sendStates sends after a step: a particle goes to the ranks
+    // whose cells come within its holder reach and twice a step's travel,
+    // and to the rank whose box it may enter in the next step; the scene
+    // read at the start looked through once, on the master, so that no
+    // step does
+    const granularSystem& all = scene();
+    List<labelList> destinations(all.size());
+    const label nProcs = Pstream::nProcs();
     if (mesh_.dynamic())
     {
         // A mesh that changes sends every state to every rank (sendStates)
-        allFresh_ = true;
-        return;
+        const labelList everyone(identity(nProcs));
+        for (labelList& to : destinations)
+        {
+            to = everyone;
+        }
+        return destinations;
     }
-    // What sendStates sends a rank after a step: the particles whose
-    // holder reach and twice a step's travel come near its cells, and
-    // those that may enter its box in the next step; the whole scene read
-    // at the start looked through once, so that no step does
-    const label me = Pstream::myProcNo();
-    fresh_.clear();
-    DynamicList<label> owners;
-    for (label g = 0; g < granular_.size(); ++g)
+    DynamicList<label> owners, to;
+    for (label g = 0; g < all.size(); ++g)
     {
-        const rigidParticle& p = granular_.particle(g);
+        const rigidParticle& p = all.particle(g);
         const scalar next = nextStepTravel(p);
         const scalar reach = fd_.holderReach(p.shape()) + next;
+        const boundBox centre(p.position(), p.position());
         boxes_->ranksWithin(p.position(), next, owners);
-        if
-        (
-            owners.found(me)
-         || fd_.rankNearBox(me, boundBox(p.position(), p.position()), reach)
-        )
+        to.clear();
+        for (label q = 0; q < nProcs; ++q)
         {
-            fresh_.append(g);
+            if (owners.found(q) || fd_.rankNearBox(q, centre, reach))
+            {
+                to.append(q);
+            }
         }
+        destinations[g] = to;
     }
-    allFresh_ = false;
+    return destinations;
 }
 
 
@@ -193,12 +203,13 @@ void Foam::dlmfdCoupling::sendStates
             to = others;
         }
         const List<labelList> everyone(1, others);
+        DynamicList<granularSystem::particleRecord> mirror;
         const Pair<scalar> received =
-            owned_->sendStates(sendTo, everyone, granular_, fresh_);
+            owned_->sendStates(sendTo, everyone, mirror);
+        setMirror(mirror);
         stateMessages_ += received.first();
         stateBytes_ += received.second();
         ++nStateSteps_;
-        allFresh_ = true;
         return;
     }
     scalar farthest = 0;
@@ -241,9 +252,10 @@ void Foam::dlmfdCoupling::sendStates
     (
         1, statePartners(farthest*(1 + 1e-9) + VSMALL)
     );
+    DynamicList<granularSystem::particleRecord> mirror;
     const Pair<scalar> received =
-        owned_->sendStates(sendTo, partners, granular_, fresh_);
-    allFresh_ = false;
+        owned_->sendStates(sendTo, partners, mirror);
+    setMirror(mirror);
     stateMessages_ += received.first();
     stateBytes_ += received.second();
     ++nStateSteps_;
@@ -270,7 +282,7 @@ Foam::label Foam::dlmfdCoupling::evolveOwned
         if (B.resultRank != Pstream::myProcNo())
         {
             FatalErrorInFunction
-                << "Particle " << granular_.id(g) << " (global index " << g
+                << "Particle " << part.id(i) << " (global index " << g
                 << ") is owned by rank " << Pstream::myProcNo()
                 << " but its centre " << part.particle(i).position()
                 << " lies in rank " << B.resultRank << "'s box"

@@ -79,14 +79,15 @@ void Foam::dlmfdCoupling::writeSeriesRows()
     }
     OFstream& os = series_();
     const scalar t = mesh_.time().value();
+    // (i: the global index)
     const auto row = [&](const label i)
     {
-        const rigidParticle& p = granular_.particle(i);
+        const rigidParticle& p = granular_.particle(mirrorPlace(i));
         const quaternion& q = p.orientation();
         const point& x = p.position();
         const vector& V = p.velocity();
         const vector& w = p.omega();
-        os  << t << ' ' << granular_.id(i) << ' '
+        os  << t << ' ' << granular_.id(mirrorPlace(i)) << ' '
             << x.x() << ' ' << x.y() << ' ' << x.z() << ' '
             << q.w() << ' ' << q.v().x() << ' ' << q.v().y() << ' '
             << q.v().z() << ' '

@@ -33,26 +33,25 @@ Foam::List<Foam::fictitiousDomain::body> Foam::dlmfdCoupling::predictedBodies
     using motionKind = rigidParticle::motionKind;
 
     const scalar dt = mesh_.time().deltaTValue();
-    const label n = listedCount();
+    const label n = granular_.size();
     V0.setSize(n);
     omega0.setSize(n);
     List<fictitiousDomain::body> bodies(n);
     for (label k = 0; k < n; ++k)
     {
-        const label i = listedParticle(k);
-        const rigidParticle& p = granular_.particle(i);
+        const rigidParticle& p = granular_.particle(k);
         fictitiousDomain::body& b = bodies[k];
         V0[k] = p.velocity();
         omega0[k] = p.omega();
         b.shape = &p.shape();
-        b.index = granular_.globalIndex(i);
+        b.index = granular_.globalIndex(k);
         // With owned particles the owner takes the body's result (the
         // box its centre is in, as the granular step's migration decides)
         b.resultRank = owned_ ? boxes_->rankOf(p.position()) : 0;
         b.R = p.R();
         b.free = p.motion() == motionKind::free;
         b.rotates = p.rotates();
-        b.excessDensity = densityRatio(i) - 1;
+        b.excessDensity = densityRatio(p) - 1;
         b.V = V0[k];
         b.omega = omega0[k];
         if (b.free)
@@ -60,7 +59,7 @@ Foam::List<Foam::fictitiousDomain::body> Foam::dlmfdCoupling::predictedBodies
             b.V += dt*g_;
             if (!p.isotropic() && b.rotates)
             {
-                const tensor J = volumeInertia(i);
+                const tensor J = volumeInertia(p);
                 b.omega -= dt*(inv(J) & (omega0[k] ^ (J & omega0[k])));
             }
             if (p.planar())
@@ -176,16 +175,15 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::dlmfdCoupling::wallLinkMatrix
 )
 {
     clockTime clock;
-    const label n = listedCount();
+    const label n = granular_.size();
     // The bodies where and as they move now (the ghost cells' are the
     // predictor's, a step's travel apart at most)
     List<fictitiousDomain::body> bodies(n);
     for (label k = 0; k < n; ++k)
     {
-        const label i = listedParticle(k);
-        const rigidParticle& p = granular_.particle(i);
+        const rigidParticle& p = granular_.particle(k);
         bodies[k].shape = &p.shape();
-        bodies[k].index = granular_.globalIndex(i);
+        bodies[k].index = granular_.globalIndex(k);
         bodies[k].centre = p.position();
         bodies[k].R = p.R();
         bodies[k].V = p.velocity();
@@ -287,19 +285,20 @@ void Foam::dlmfdCoupling::correct(volVectorField& U)
     // each body's result)
     scalar change = 0;
     lastV_.setSize(granular_.size(), vector::max);
+    const bodyPlaces places(bodies);
     forAll(res, k)
     {
         if (solved[k].resultRank != Pstream::myProcNo())
         {
             continue;
         }
-        const label i = bodyPlaces::global(solved, k);
+        const label place = places(bodyPlaces::global(solved, k));
         const vector V = solved[k].V + res[k].dV;
         if (nCorrections_ > 1)
         {
-            change = max(change, mag(V - lastV_[i]));
+            change = max(change, mag(V - lastV_[place]));
         }
-        lastV_[i] = V;
+        lastV_[place] = V;
     }
     if (owned_)
     {
@@ -323,6 +322,7 @@ void Foam::dlmfdCoupling::correct(volVectorField& U)
 void Foam::dlmfdCoupling::evolve(volVectorField& U)
 {
     const scalar dt = mesh_.time().deltaTValue();
+    // (the particles of the step's list: the whole scene, or the mirror)
     const label n = granular_.size();
     clockTime clock;
 
@@ -372,7 +372,7 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
             links_.payAmongHolders
             (
                 U, dt, ddtCoeff(U), fd_, solved, linkMomentum, linkMoment,
-                unpaid, unpaidMoment, n
+                unpaid, unpaidMoment, nParticles_
             );
             fd_.setMasterShare(std::move(unpaid), std::move(unpaidMoment));
         }
@@ -439,13 +439,13 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
         const vector omega3 = b.omega + r.dOmega;
         if (corrected)
         {
-            lastChange = max(lastChange, mag(V3 - lastV_[i]));
+            lastChange = max(lastChange, mag(V3 - lastV_[place]));
         }
         const scalar vp = b.shape->volume();
         Fh_[i] = rhoFluid_*(vp*(V3 - V0[place])/dt - r.sumLambda);
+        const tensor J = volumeInertia(granular_.particle(place));
         Th_[i] =
-            rhoFluid_
-           *((volumeInertia(i) & (omega3 - omega0[place]))/dt - r.sumMoment);
+            rhoFluid_*((J & (omega3 - omega0[place]))/dt - r.sumMoment);
 
         if (owned_)
         {
@@ -507,16 +507,17 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
             continue;
         }
         const label g = bodyPlaces::global(solved, k);
-        if (!isFresh(g))
+        const label place = mirrorPlace(g);
+        if (place < 0)
         {
             FatalErrorInFunction
                 << "t = " << mesh_.time().value() << ": rank "
-                << Pstream::myProcNo() << " holds particle "
-                << granular_.id(g) << " but its new state was not sent to"
-                << " it (the particle travelled farther than the margin"
-                << " its state is sent with)" << exit(FatalError);
+                << Pstream::myProcNo() << " holds particle of global index "
+                << g << " but its new state was not sent to it (the"
+                << " particle travelled farther than the margin its state"
+                << " is sent with)" << exit(FatalError);
         }
-        const rigidParticle& p = granular_.particle(g);
+        const rigidParticle& p = granular_.particle(place);
         const vector moved = granular_.separation(p.position(), b.centre);
         forAll(r.interiorCells, j)
         {
@@ -533,7 +534,7 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
 
     const granularSystem::statistics s =
         owned_ ? owned_->stats() : granular_.stats();
-    Info<< "DLM/FD: " << n << " particles, " << nPoints << " points";
+    Info<< "DLM/FD: " << nParticles_ << " particles, " << nPoints << " points";
     if (fd_.treatment() == fictitiousDomain::surfaceTreatment::ghostCells)
     {
         // Only ghostShear viscous fits the fluid at its ghost cells
@@ -559,7 +560,7 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
     Info<< "; granular " << nSub << " sub-steps";
     if (s.nInReach >= 0)
     {
-        Info<< " (contacts of " << s.nInReach << " of " << n
+        Info<< " (contacts of " << s.nInReach << " of " << nParticles_
             << " particles in reach)";
     }
     if (s.nFallbacks)

@@ -163,11 +163,11 @@ Foam::ownedGranularSteps::ownedGranularSteps
                     << s.particle(i).position() << " lies outside the"
                     << " decomposed domain" << exit(FatalError);
             }
-            if (s.globalIndex(i) != i)
+            if (i && s.globalIndex(i) <= s.globalIndex(i - 1))
             {
                 FatalErrorInFunction
                     << "the system of rank " << rank << " does not hold"
-                    << " the whole scene in global order"
+                    << " its particles in ascending global order"
                     << abort(FatalError);
             }
             if (r == rank)

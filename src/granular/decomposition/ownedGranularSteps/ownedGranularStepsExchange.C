@@ -22,6 +22,8 @@ Description
 #include "SortableList.H"
 #include "HashSet.H"
 
+#include <algorithm>
+
 using namespace Foam::ownedGranularRecords;
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -454,8 +456,7 @@ Foam::label Foam::ownedGranularSteps::takeStates
 (
     const UList<char>& buf,
     label& pos,
-    granularSystem& whole,
-    DynamicList<label>* taken
+    granularSystem& whole
 )
 {
     label n = 0;
@@ -474,10 +475,6 @@ Foam::label Foam::ownedGranularSteps::takeStates
                 << abort(FatalError);
         }
         whole.particle(global).setState(state);
-        if (taken)
-        {
-            taken->append(global);
-        }
     }
     return n;
 }
@@ -498,7 +495,7 @@ void Foam::ownedGranularSteps::unpackScene
     for (const List<char>& buf : all)
     {
         label pos = 0, n = 0;
-        nStates += takeStates(buf, pos, whole, nullptr);
+        nStates += takeStates(buf, pos, whole);
         rankExchange::get(buf, pos, n);
         for (label k = 0; k < n; ++k)
         {
@@ -537,10 +534,10 @@ Foam::Pair<Foam::scalar> Foam::ownedGranularSteps::sendStates
 (
     const UList<List<labelList>>& sendTo,
     const UList<labelList>& partners,
-    granularSystem& mirror,
-    DynamicList<label>& refreshed
+    DynamicList<granularSystem::particleRecord>& mirror
 ) const
 {
+    using record = granularSystem::particleRecord;
     const labelList& ranks = exchange_.localRanks();
     if (sendTo.size() != systems_.size() || partners.size() != systems_.size())
     {
@@ -549,7 +546,7 @@ Foam::Pair<Foam::scalar> Foam::ownedGranularSteps::sendStates
             << partners.size() << " of partners for " << systems_.size()
             << " local ranks" << abort(FatalError);
     }
-    refreshed.clear();
+    mirror.clear();
     List<rankExchange::messages> perRank(systems_.size());
     forAll(systems_, k)
     {
@@ -586,23 +583,25 @@ Foam::Pair<Foam::scalar> Foam::ownedGranularSteps::sendStates
         }
         forAll(sendTo[k], i)
         {
-            for (const label r : sendTo[k][i])
+            if (sendTo[k][i].empty())
             {
-                DynamicList<char>& buf = m.out[findSortedIndex(m.ranks, r)];
-                rankExchange::put(buf, s.globalIndex(i));
-                put(buf, s.particle(i).state());
+                continue;
+            }
+            const record r(s.record(i));
+            for (const label to : sendTo[k][i])
+            {
+                putCopy(m.out[findSortedIndex(m.ranks, to)], r);
             }
         }
-        // This rank's own particles are fresh in the mirror too
+        // This rank's own particles are in the mirror too
         for (label i = 0; i < s.size(); ++i)
         {
             if (!s.ghost(i))
             {
-                mirror.particle(s.globalIndex(i)).setState
-                (
-                    s.particle(i).state()
-                );
-                refreshed.append(s.globalIndex(i));
+                record r(s.record(i));
+                r.Fext = Zero;
+                r.Text = Zero;
+                mirror.append(r);
             }
         }
     }
@@ -613,23 +612,34 @@ Foam::Pair<Foam::scalar> Foam::ownedGranularSteps::sendStates
     {
         for (const List<char>& buf : m.in)
         {
-            label pos = 0;
-            takeStates(buf, pos, mirror, &refreshed);
+            label pos = 0, n = 0;
+            rankExchange::get(buf, pos, n);
+            for (label k = 0; k < n; ++k)
+            {
+                record r;
+                getCopy(buf, pos, r);
+                mirror.append(r);
+            }
             received.first() += 1;
             received.second() += buf.size();
         }
     }
-    Foam::sort(refreshed);
-    // (several local ranks in one process may take the same particle)
+    // In ascending global index, each once (several local ranks in one
+    // process may take the same particle)
+    std::sort
+    (
+        mirror.begin(), mirror.end(),
+        [](const record& a, const record& b) { return a.global < b.global; }
+    );
     label nUnique = 0;
-    forAll(refreshed, i)
+    forAll(mirror, i)
     {
-        if (i == 0 || refreshed[i] != refreshed[nUnique - 1])
+        if (i == 0 || mirror[i].global != mirror[nUnique - 1].global)
         {
-            refreshed[nUnique++] = refreshed[i];
+            mirror[nUnique++] = mirror[i];
         }
     }
-    refreshed.resize(nUnique);
+    mirror.resize(nUnique);
     return received;
 }
 

@@ -16,6 +16,8 @@ License
 #include "PstreamReduceOps.H"
 #include "UIPstream.H"
 #include "UOPstream.H"
+#include "IPstream.H"
+#include "OPstream.H"
 
 #include <chrono>
 
@@ -215,6 +217,38 @@ Foam::List<Foam::List<char>> Foam::pstreamRankExchange::allGather
     Pstream::gatherList(all);
     Pstream::scatterList(all);
     return all;
+}
+
+
+Foam::List<Foam::List<char>> Foam::pstreamRankExchange::scatter
+(
+    const UList<DynamicList<char>>& fromFirst
+) const
+{
+    const timed clock(seconds_);
+    List<List<char>> mine(1);
+    if (Pstream::master())
+    {
+        if (fromFirst.size() != Pstream::nProcs())
+        {
+            FatalErrorInFunction
+                << fromFirst.size() << " messages for "
+                << Pstream::nProcs() << " ranks" << abort(FatalError);
+        }
+        // One rank at a time: the master holds no more than it packed
+        for (label q = 1; q < Pstream::nProcs(); ++q)
+        {
+            OPstream os(Pstream::commsTypes::blocking, q);
+            os << fromFirst[q];
+        }
+        mine[0] = fromFirst[0];
+    }
+    else
+    {
+        IPstream is(Pstream::commsTypes::blocking, Pstream::masterNo());
+        is >> mine[0];
+    }
+    return mine;
 }
 
 

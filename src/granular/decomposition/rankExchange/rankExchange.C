@@ -184,4 +184,24 @@ Foam::List<Foam::List<char>> Foam::virtualRankExchange::allGather
 }
 
 
+Foam::List<Foam::List<char>> Foam::virtualRankExchange::scatter
+(
+    const UList<DynamicList<char>>& fromFirst
+) const
+{
+    if (fromFirst.size() != ranks_.size())
+    {
+        FatalErrorInFunction
+            << fromFirst.size() << " messages for " << ranks_.size()
+            << " ranks" << abort(FatalError);
+    }
+    List<List<char>> all(fromFirst.size());
+    forAll(fromFirst, r)
+    {
+        all[r] = fromFirst[r];
+    }
+    return all;
+}
+
+
 // ************************************************************************* //
