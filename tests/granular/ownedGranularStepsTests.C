@@ -19,7 +19,8 @@ Description
     contact histories and the contact count, while particles change
     ranks, contacts cross the boxes' faces, edges and corners and the
     periodic boundaries. The same with subCycling inReach and collisions
-    automatic, and with boxes narrower than the ghosts' reach.
+    automatic, with boxes narrower than the ghosts' reach, and from a
+    scene that rank 0 alone read and handed out.
 
 \*---------------------------------------------------------------------------*/
 
@@ -28,6 +29,7 @@ Description
 #include "testInput.H"
 #include "IFstream.H"
 #include "OSspecific.H"
+#include "HashSet.H"
 
 #include <gtest/gtest.h>
 #include <map>
@@ -421,6 +423,117 @@ TEST(ownedGranularSteps, aRecordBeyondTheReachIsCountedAndDropped)
         for (const granularSystem::particleRecord& r : owned.ownedRecords())
         {
             expectSameBits(whole->particle(r.global), r, step);
+        }
+    }
+}
+
+
+TEST(ownedGranularSteps, aSceneHandedOutByRankZeroGivesTheBitsOfTheWholeScene)
+{
+    // The start of owned mode without the whole scene on every rank: the
+    // scene (with contact histories, written mid-run and read back as a
+    // restart) read by rank 0 alone and handed out (scatterScene). Each
+    // rank receives its own particles and those named for it, in ascending
+    // global index, holds its own only with the histories of their
+    // contacts, and the steps give the bits of the whole scene
+    auto running = makeScene("", "", 0.6);
+    const scalar Deltat = 10*running->maxSubStep();
+    for (label step = 0; step < 10; ++step)
+    {
+        running->evolve(Deltat);
+    }
+    ASSERT_GT(running->history().entries().size(), 0);
+    const fileName dir("ownedGranularStepsScatterTest");
+    running->writeParticles(dir/"0.1");
+    auto whole = makeScene("", "", 0.6);
+    auto read = makeScene("", "", 0.6);
+    whole->readParticles(dir/"0.1"/"particles");
+    read->readParticles(dir/"0.1"/"particles");
+    rmDir(dir);
+
+    const label K = 8;
+    const boxDecomposition decomposition
+    (
+        whole->domain(), whole->periodic(), labelVector(2, 2, 2)
+    );
+    // Every third particle also to the next rank after its owner
+    List<labelList> destinations(read->size());
+    forAll(destinations, i)
+    {
+        if (i % 3 == 0)
+        {
+            const label owner = decomposition.rankOf(read->particle(i).position());
+            destinations[i] = labelList(1, (owner + 1) % K);
+        }
+    }
+    PtrList<granularSystem> parts(K);
+    for (label k = 0; k < K; ++k)
+    {
+        parts.set(k, makeScene("", "", 0.6).ptr());
+    }
+    const virtualRankExchange exchange(K);
+    UPtrList<granularSystem> partList(parts);
+    const List<List<granularSystem::particleRecord>> sent
+    (
+        ownedGranularSteps::scatterScene
+        (
+            exchange, decomposition, read.get(), destinations, partList
+        )
+    );
+    read.clear();
+
+    // What each rank received and holds
+    label nOwned = 0;
+    for (label k = 0; k < K; ++k)
+    {
+        label expected = 0;
+        for (label i = 0; i < whole->size(); ++i)
+        {
+            const label owner =
+                decomposition.rankOf(whole->particle(i).position());
+            expected += owner == k || destinations[i].found(k);
+        }
+        EXPECT_EQ(sent[k].size(), expected) << "rank " << k;
+        forAll(sent[k], m)
+        {
+            if (m)
+            {
+                EXPECT_LT(sent[k][m - 1].global, sent[k][m].global);
+            }
+            expectSameBits(whole->particle(sent[k][m].global), sent[k][m], 0);
+        }
+        const granularSystem& s = parts[k];
+        labelHashSet own;
+        for (label i = 0; i < s.size(); ++i)
+        {
+            EXPECT_EQ(decomposition.rankOf(s.particle(i).position()), k);
+            own.insert(s.globalIndex(i));
+        }
+        nOwned += s.size();
+        for (const auto& e : s.history().entries())
+        {
+            EXPECT_TRUE
+            (
+                own.found(e.first.first()) || own.found(e.first.second())
+            ) << "rank " << k << " holds the history of contact "
+              << e.first.first() << ' ' << e.first.second();
+        }
+    }
+    EXPECT_EQ(nOwned, whole->size());
+
+    ownedGranularSteps owned(std::move(partList), decomposition, exchange);
+    for (label step = 0; step < 20; ++step)
+    {
+        EXPECT_EQ(owned.evolve(Deltat), whole->evolve(Deltat));
+        EXPECT_EQ(owned.stats().nContacts, whole->stats().nContacts)
+            << "step " << step;
+        for (const granularSystem::particleRecord& r : owned.ownedRecords())
+        {
+            expectSameBits(whole->particle(r.global), r, step);
+        }
+        if (::testing::Test::HasFailure())
+        {
+            break;
         }
     }
 }
