@@ -26,7 +26,8 @@ License
 Foam::autoPtr<Foam::granularSystem> Foam::granularRun::readScene
 (
     const sceneEffects& effects,
-    const bool log
+    const bool log,
+    const bool withParticles
 ) const
 {
     // (IOdictionary: read from the case itself in a parallel run too)
@@ -89,7 +90,16 @@ Foam::autoPtr<Foam::granularSystem> Foam::granularRun::readScene
     }
 
     granular.readGravity(runTime_);
+    if (withParticles)
+    {
+        readParticleFile(granular);
+    }
+    return scene;
+}
 
+
+void Foam::granularRun::readParticleFile(granularSystem& into) const
+{
     const fileName particleFile
     (
         runTime_.globalPath()/runTime_.timeName()/"particles"
@@ -101,8 +111,7 @@ Foam::autoPtr<Foam::granularSystem> Foam::granularRun::readScene
             << "    Place particles with placeParticles, or copy them from"
             << " 0.orig" << exit(FatalError);
     }
-    granular.readParticles(particleFile);
-    return scene;
+    into.readParticles(particleFile);
 }
 
 
@@ -155,16 +164,19 @@ void Foam::granularRun::setOwned(const sceneEffects& effects)
     (
         new boxDecomposition(granular.domain(), granular.periodic(), n)
     );
-    nParticles_ = granular.size();
-    // (read on every rank: reading the case's dictionaries is collective;
-    // only the master keeps its particles)
-    whole_ = readScene(effects, false);
+    // The master hands each rank its own particles: no other rank reads
+    // the whole scene
+    UPtrList<granularSystem> part(1);
+    part.set(0, granular_.get());
+    ownedGranularSteps::scatterScene
+    (
+        exchange_, *boxes_, Pstream::master() ? whole_.get() : nullptr,
+        List<labelList>(Pstream::master() ? whole_->size() : 0), part
+    );
     if (!Pstream::master())
     {
         whole_.clear();
     }
-    UPtrList<granularSystem> part(1);
-    part.set(0, granular_.get());
     owned_.reset(new ownedGranularSteps(std::move(part), *boxes_, exchange_));
     Info<< "Particle distribution: owned, " << n.x() << " x " << n.y()
         << " x " << n.z() << " boxes of the domain; each rank moves the"
@@ -200,11 +212,21 @@ Foam::granularRun::granularRun(Time& runTime, const sceneEffects& effects)
     ownedTotals_(),
     nOwnedSteps_(0)
 {
-    granular_ = readScene(effects, true);
-    granularSystem& granular = *granular_;
-    nParticles_ = granular.size();
+    // With owned particles the master alone reads the particles, into
+    // whole_ (the dictionaries are read on every rank: a collective read)
+    granular_ = readScene(effects, true, false);
+    if (granular_->ownedDistribution())
+    {
+        whole_ = readScene(effects, false, Pstream::master());
+    }
+    else
+    {
+        readParticleFile(*granular_);
+    }
+    const granularSystem& granular = whole_.valid() ? *whole_ : *granular_;
+    nParticles_ = returnReduce(granular.size(), maxOp<label>());
     Info<< "Gravity " << granular.gravity() << " m/s^2" << nl;
-    Info<< "Particles: " << granular.size() << " from "
+    Info<< "Particles: " << nParticles_ << " from "
         << runTime_.globalPath()/runTime_.timeName()/"particles" << nl
         << "Shapes:";
     for (const particleShape& s : granular.shapes())
