@@ -439,6 +439,7 @@ Foam::dlmfdCoupling::dlmfdCoupling
     stateMessages_(0),
     stateBytes_(0),
     nStateSteps_(0),
+    mirrorParticles_(0),
     commSeconds_(0),
     granularSeconds_(0),
     seriesSeconds_(0),
@@ -729,6 +730,10 @@ void Foam::dlmfdCoupling::reportExchange() const
     const scalar nSteps = max(nStateSteps_, label(1));
     line("state messages per step", stateMessages_, nSteps);
     line("state bytes per step ", stateBytes_, nSteps);
+    if (owned_)
+    {
+        line("particles held per step", mirrorParticles_, nSteps);
+    }
     Info<< endl;
 }
 

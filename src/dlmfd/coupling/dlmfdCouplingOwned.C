@@ -18,6 +18,7 @@ Description
 
 #include "dlmfdCoupling.H"
 #include "Time.H"
+#include "meshChangeReach.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -90,19 +91,54 @@ const Foam::fictitiousDomain::body& Foam::dlmfdCoupling::ownBody
 }
 
 
+const Foam::meshChangeReach* Foam::dlmfdCoupling::meshChange() const
+{
+    return
+        mesh_.dynamic()
+      ? dynamic_cast<const meshChangeReach*>(&mesh_)
+      : nullptr;
+}
+
+
+bool Foam::dlmfdCoupling::everyStateEverywhere() const
+{
+    return mesh_.dynamic() && !meshChange();
+}
+
+
+Foam::scalar Foam::dlmfdCoupling::stateReach(const rigidParticle& p) const
+{
+    const scalar hold = fd_.holderReach(p.shape());
+    const meshChangeReach* change = meshChange();
+    if (!change)
+    {
+        return hold;
+    }
+    return max
+    (
+        hold,
+        change->bodyReach
+        (
+            p.shape().boundingRadius(), mag(p.velocity()),
+            mesh_.time().deltaTValue()
+        )
+    );
+}
+
+
 Foam::List<Foam::labelList> Foam::dlmfdCoupling::destinationsAtStart() const
 {
     // What sendStates sends after a step: a particle goes to the ranks
-    // whose cells come within its holder reach and twice a step's travel,
-    // and to the rank whose box it may enter in the next step; the scene
-    // read at the start looked through once, on the master, so that no
-    // step does
+    // whose cells come within its reach (stateReach) and twice a step's
+    // travel, and to the rank whose box it may enter in the next step; the
+    // scene read at the start looked through once, on the master, so that
+    // no step does
     const granularSystem& all = scene();
     List<labelList> destinations(all.size());
     const label nProcs = Pstream::nProcs();
-    if (mesh_.dynamic())
+    if (everyStateEverywhere())
     {
-        // A mesh that changes sends every state to every rank (sendStates)
+        // A changing mesh that tells no reach: every state to every rank
         const labelList everyone(identity(nProcs));
         for (labelList& to : destinations)
         {
@@ -115,7 +151,7 @@ Foam::List<Foam::labelList> Foam::dlmfdCoupling::destinationsAtStart() const
     {
         const rigidParticle& p = all.particle(g);
         const scalar next = nextStepTravel(p);
-        const scalar reach = fd_.holderReach(p.shape()) + next;
+        const scalar reach = stateReach(p) + next;
         const boundBox centre(p.position(), p.position());
         boxes_->ranksWithin(p.position(), next, owners);
         to.clear();
@@ -181,15 +217,15 @@ void Foam::dlmfdCoupling::sendStates
     // centre, plus the distance from this step's predicted centre and
     // twice the next step's travel at this step's dt (a margin for a
     // longer next step; a rank the state misses stops the next step's
-    // exchange of cell sums)
+    // exchange of cell sums). A mesh that changes around the particles
+    // may reach farther at its next update (stateReach)
     const label me = Pstream::myProcNo();
     const granularSystem& part = *part_;
     List<List<labelList>> sendTo(1, List<labelList>(part.size()));
-    if (mesh_.dynamic())
+    if (everyStateEverywhere())
     {
-        // A mesh that changes may refine around every particle, farther
-        // than its holders reach, and moves the ranks' cells: every state
-        // to every rank
+        // A changing mesh that tells no reach may change cells anywhere:
+        // every state to every rank
         DynamicList<label> others(Pstream::nProcs());
         for (label q = 0; q < Pstream::nProcs(); ++q)
         {
@@ -207,6 +243,7 @@ void Foam::dlmfdCoupling::sendStates
         const Pair<scalar> received =
             owned_->sendStates(sendTo, everyone, mirror);
         setMirror(mirror);
+        mirrorParticles_ += granular_.size();
         stateMessages_ += received.first();
         stateBytes_ += received.second();
         ++nStateSteps_;
@@ -222,7 +259,7 @@ void Foam::dlmfdCoupling::sendStates
         const scalar moved =
             mag(granular_.separation(p.position(), B.centre));
         const scalar next = nextStepTravel(p);
-        const scalar reach = fd_.holderReach(p.shape()) + moved + next;
+        const scalar reach = stateReach(p) + moved + next;
         farthest = max(farthest, reach);
         fd_.ranksNear(p.position(), reach, near);
         // and the ranks whose box it may enter in the next step: its owner
@@ -256,6 +293,7 @@ void Foam::dlmfdCoupling::sendStates
     const Pair<scalar> received =
         owned_->sendStates(sendTo, partners, mirror);
     setMirror(mirror);
+    mirrorParticles_ += granular_.size();
     stateMessages_ += received.first();
     stateBytes_ += received.second();
     ++nStateSteps_;

@@ -126,6 +126,19 @@ void Foam::particleRefineFvMesh::readCoefficients()
 }
 
 
+Foam::scalarList Foam::particleRefineFvMesh::levelReach() const
+{
+    // In units of the base cell h0: bufferLayers of its own cells (level
+    // L - j: h0/2^(L - j)) added to the finer ones'
+    scalarList reach(maxLevel_ + 1, scalar(0));
+    for (label j = 1; j <= maxLevel_; ++j)
+    {
+        reach[j] = reach[j - 1] + bufferLayers_*std::pow(2.0, j - maxLevel_);
+    }
+    return reach;
+}
+
+
 const Foam::particleRefinementTargets&
 Foam::particleRefineFvMesh::targets() const
 {
@@ -158,14 +171,7 @@ Foam::labelList Foam::particleRefineFvMesh::targetLevels
     const scalarField& V = cellVolumes();
     labelList target(nCells(), 0);
 
-    // The distance beyond the finest region that each coarser level
-    // reaches, in units of the base cell h0: bufferLayers of its own cells
-    // (level L - j: h0/2^(L - j)) added to the finer ones'
-    scalarList reach(maxLevel_ + 1, scalar(0));
-    for (label j = 1; j <= maxLevel_; ++j)
-    {
-        reach[j] = reach[j - 1] + bufferLayers_*std::pow(2.0, j - maxLevel_);
-    }
+    const scalarList reach(levelReach());
 
     // Each cell's base-mesh size, once for all bodies and images
     scalarField h0(nCells());
@@ -364,9 +370,22 @@ Foam::particleRefineFvMesh::particleRefineFvMesh(const IOobject& io)
     unrefineMargin_(0.5),
     bufferLayers_(4),
     maxCells_(labelMax/2),
-    started_(false)
+    started_(false),
+    largestBaseCell_(0)
 {
     readCoefficients();
+    {
+        const labelList& level = meshCutter().cellLevel();
+        const scalarField& V = cellVolumes();
+        forAll(V, c)
+        {
+            largestBaseCell_ = max
+            (
+                largestBaseCell_, std::cbrt(V[c])*std::pow(2.0, level[c])
+            );
+        }
+        reduce(largestBaseCell_, maxOp<scalar>());
+    }
 
     // A mesh refined already (a restart) has had its initial refinement:
     // its first update is any other's, so that the restart is exact
@@ -422,6 +441,27 @@ bool Foam::particleRefineFvMesh::update()
         moving(false);
     }
     return changed;
+}
+
+
+Foam::scalar Foam::particleRefineFvMesh::bodyReach
+(
+    const scalar R,
+    const scalar speed,
+    const scalar deltaT
+) const
+{
+    // targetLevels' shell and wake with the larger of its two margins
+    // (unrefinement's), and the coarser levels around them
+    const scalar Db = 2*R;
+    const scalar margin = unrefineMargin_;
+    const scalar shell =
+        R + (shellWidth_ + margin)*Db + speed*2*refineInterval_*deltaT;
+    const scalar wake =
+        wakeLength_ > 0
+      ? R + (wakeLength_ + margin)*Db + (wakeRadius_ + margin)*Db
+      : 0;
+    return max(shell, wake) + levelReach()[maxLevel_]*largestBaseCell_;
 }
 
 
