@@ -520,6 +520,39 @@ TEST(ownedGranularSteps, aSceneHandedOutByRankZeroGivesTheBitsOfTheWholeScene)
         }
     }
     EXPECT_EQ(nOwned, whole->size());
+    // Each contact's history on the owners of both its particles (a pair
+    // across ranks is computed on both)
+    List<std::map<std::pair<label, label>, vector>> held(K);
+    for (label k = 0; k < K; ++k)
+    {
+        for (const auto& f : parts[k].history().entries())
+        {
+            held[k][{f.first.first(), f.first.second()}] = f.second;
+        }
+    }
+    label nAcross = 0;
+    for (const auto& e : whole->history().entries())
+    {
+        const label i = e.first.first(), j = e.first.second();
+        labelList owners(1, decomposition.rankOf(whole->particle(i).position()));
+        if (j >= 0)
+        {
+            const label rj = decomposition.rankOf(whole->particle(j).position());
+            if (rj != owners[0])
+            {
+                owners.append(rj);
+                ++nAcross;
+            }
+        }
+        for (const label r : owners)
+        {
+            const auto f = held[r].find({i, j});
+            EXPECT_TRUE(f != held[r].end() && f->second == e.second)
+                << "rank " << r << " lacks the history of contact " << i << ' '
+                << j;
+        }
+    }
+    EXPECT_GT(nAcross, 0);
 
     ownedGranularSteps owned(std::move(partList), decomposition, exchange);
     for (label step = 0; step < 20; ++step)

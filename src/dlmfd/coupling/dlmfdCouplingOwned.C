@@ -114,13 +114,15 @@ Foam::scalar Foam::dlmfdCoupling::stateReach(const rigidParticle& p) const
     {
         return hold;
     }
+    // (the update's look-ahead at twice this step's dt: the next step,
+    // whose dt the update uses, may be longer; nextStepTravel's margin)
     return max
     (
         hold,
         change->bodyReach
         (
             p.shape().boundingRadius(), mag(p.velocity()),
-            mesh_.time().deltaTValue()
+            2*mesh_.time().deltaTValue()
         )
     );
 }

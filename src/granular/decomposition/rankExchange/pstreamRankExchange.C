@@ -235,17 +235,20 @@ Foam::List<Foam::List<char>> Foam::pstreamRankExchange::scatter
                 << fromFirst.size() << " messages for "
                 << Pstream::nProcs() << " ranks" << abort(FatalError);
         }
-        // One rank at a time: the master holds no more than it packed
+        // One rank at a time, each waiting for its message: a scheduled
+        // (standard) send, not a buffered one, whose buffer (OpenFOAM's
+        // mpiBufferSize, 20 MB by default) a large scene's message would
+        // overflow
         for (label q = 1; q < Pstream::nProcs(); ++q)
         {
-            OPstream os(Pstream::commsTypes::blocking, q);
+            OPstream os(Pstream::commsTypes::scheduled, q);
             os << fromFirst[q];
         }
         mine[0] = fromFirst[0];
     }
     else
     {
-        IPstream is(Pstream::commsTypes::blocking, Pstream::masterNo());
+        IPstream is(Pstream::commsTypes::scheduled, Pstream::masterNo());
         is >> mine[0];
     }
     return mine;
