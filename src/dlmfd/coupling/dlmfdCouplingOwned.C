@@ -10,7 +10,8 @@ License
     option) any later version. See <http://www.gnu.org/licenses/>.
 
 Description
-    Foam::dlmfdCoupling with particleDistribution owned: the bodies a
+    Foam::dlmfdCoupling with particleDistribution owned: the start (the
+    boxes, this rank's part and mirror from the master's reading), the bodies a
     rank's fictitious domain takes, the owners' step and the new states
     sent to the ranks near each particle.
 
@@ -21,6 +22,107 @@ Description
 #include "meshChangeReach.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::dlmfdCoupling::setOwned(const sceneEffects& effects)
+{
+    if (penalty_.on())
+    {
+        // The penalty gives every cell to its nearest body, of the whole
+        // scene; with owned particles a rank holds those near its cells
+        FatalErrorInFunction
+            << "constant/dlmfdProperties: fictitiousDomain/fluidStepForce"
+            << " penalty needs every particle on every rank, and"
+            << " constant/collisionProperties selects particleDistribution"
+            << " owned. Use fluidStepForce multipliers (the default) or"
+            << " particleDistribution master" << exit(FatalError);
+    }
+
+    // The boxes: the mesh's decomposition where its ranks' cells make a
+    // grid of boxes numbered x fastest (simple, hierarchical xyz), so that
+    // a particle's owner is the rank its centre's cell is on; else the
+    // factors of the number of ranks that cut the domain with the least
+    // area between boxes (one box along a direction that is one cell
+    // deep: a 2D case), which need not follow the cells: more bodies then
+    // travel to ranks whose cells are far from them
+    List<boundBox> meshBoxes(Pstream::nProcs());
+    meshBoxes[Pstream::myProcNo()] = boundBox(mesh_.points(), false);
+    Pstream::gatherList(meshBoxes);
+    Pstream::scatterList(meshBoxes);
+    boxes_ = boxDecomposition::fromRankBoxes
+    (
+        granular_.domain(), granular_.periodic(), meshBoxes
+    );
+    const bool fromMesh = boxes_.valid();
+    if (!fromMesh)
+    {
+        boxes_.reset
+        (
+            new boxDecomposition
+            (
+                granular_.domain(), granular_.periodic(),
+                boxDecomposition::leastAreaBoxes
+                (
+                    granular_.domain().span(), Pstream::nProcs()
+                )
+            )
+        );
+    }
+    const labelVector& n = boxes_->n();
+
+    // Each rank's fictitious domain takes the bodies near its cells and
+    // its own
+    List<boundBox> ownerBoxes(Pstream::nProcs());
+    forAll(ownerBoxes, r)
+    {
+        ownerBoxes[r] = boxes_->bounds(r);
+    }
+    scalar largestRadius = 0;
+    for (label i = 0; i < scene().size(); ++i)
+    {
+        largestRadius =
+            max(largestRadius, scene().particle(i).shape().boundingRadius());
+    }
+    Pstream::scatter(largestRadius);
+    fd_.setBodiesPerRank(std::move(ownerBoxes), largestRadius);
+
+    // This rank's part and mirror: its own particles and those its first
+    // step lists, from the master's reading
+    part_ = sceneWithoutParticles(effects);
+    UPtrList<granularSystem> parts(1);
+    parts.set(0, part_.get());
+    {
+        const List<List<granularSystem::particleRecord>> near
+        (
+            ownedGranularSteps::scatterScene
+            (
+                exchange_, *boxes_,
+                Pstream::master() ? whole_.get() : nullptr,
+                Pstream::master() ? destinationsAtStart() : List<labelList>(),
+                parts
+            )
+        );
+        granular_.setScene(granular_.localConstants());
+        setMirror(near[0]);
+    }
+    owned_.reset(new ownedGranularSteps(std::move(parts), *boxes_, exchange_));
+    Info<< "Particle distribution: owned, " << n.x() << " x " << n.y()
+        << " x " << n.z() << " boxes of the collision domain; each rank"
+        << " moves the particles in its box" << nl;
+    if (fromMesh)
+    {
+        Info<< "    the boxes are the mesh decomposition's: each particle is"
+            << " owned by the rank of the cell its centre lies in" << nl;
+    }
+    else
+    {
+        Info<< "    the mesh decomposition's ranks do not make a grid of"
+            << " boxes numbered x fastest (decomposeParDict: method simple,"
+            << " or hierarchical with order xyz, do): the boxes cut the"
+            << " domain evenly and a particle's owner may not be the rank"
+            << " of its cell, which sends more bodies between ranks" << nl;
+    }
+}
+
 
 const Foam::UList<Foam::fictitiousDomain::body>&
 Foam::dlmfdCoupling::bodiesHeld
