@@ -67,7 +67,32 @@ void Foam::restartableTime::restoreState()
             << " continues, not bitwise" << endl;
         return;
     }
-    setTime(dict.get<scalar>("value"), timeIndex());
+    // The folder's name is the stored value at a precision that a run may
+    // have raised (a write off the time grid of timePrecision); Time raises
+    // it to its largest to find that folder, where the exact value would be
+    // named otherwise: keep the least precision from timePrecision up (or
+    // below it, were it lowered since) that gives the folder's name
+    const scalar exactValue = dict.get<scalar>("value");
+    const int timePrecision =
+        controlDict().getOrDefault<int>("timePrecision", 6);
+    bool named = false;
+    for (int p = timePrecision; p <= maxPrecision_ && !named; ++p)
+    {
+        named = (Time::timeName(exactValue, p) == name);
+        precision_ = p;
+    }
+    for (int p = 1; p < timePrecision && !named; ++p)
+    {
+        named = (Time::timeName(exactValue, p) == name);
+        precision_ = p;
+    }
+    setTime(exactValue, timeIndex());
+    if (timeName() != name)
+    {
+        FatalErrorInFunction
+            << file << ": no time precision names the value " << exactValue
+            << " \"" << name.c_str() << "\"" << exit(FatalError);
+    }
     if (controlDict().getOrDefault("adjustTimeStep", false))
     {
         deltaT_ = dict.get<scalar>("deltaT");
@@ -80,14 +105,50 @@ void Foam::restartableTime::restoreState()
     if (dict.get<scalar>("writeInterval") == writeInterval_)
     {
         anchor_ = dict.get<scalar>("anchor");
+        // As Time counts a step a write: within half a step of the time;
+        // a start off the write times (a stop on a signal) counts the
+        // writes before it
         writesBeforeStart_ = label
         (
-            std::floor((startTime_ - anchor_)/writeInterval_ + 0.5)
+            std::floor((value() - anchor_ + 0.5*deltaT_)/writeInterval_)
         );
     }
     Info<< "Restart state of time " << timeName() << " restored (t = "
         << value() << ", deltaT " << deltaT_ << ", writes counted from "
         << anchor_ << ")" << nl << endl;
+}
+
+
+void Foam::restartableTime::nameTheStepExactly()
+{
+    // As Time::operator++ does at its write times, which a stop on a signal
+    // is not: a name that tells this step from its neighbours (within a
+    // tenth of deltaT, or 10^-timePrecision)
+    const scalar tol = max(min(pow(10.0, -precision_), 0.1*deltaT_), SMALL);
+    const int oldPrecision = precision_;
+    scalar named = 0;
+    while
+    (
+        precision_ < maxPrecision_
+     && readScalar(timeName(), named)
+     && mag(named - timeToUserTime(value())) > tol
+    )
+    {
+        ++precision_;
+        setTime(value(), timeIndex());
+    }
+    if (precision_ != oldPrecision)
+    {
+        Info<< "Time precision raised from " << oldPrecision << " to "
+            << precision_ << " to name time " << timeName() << endl;
+    }
+    if (precision_ == maxPrecision_)
+    {
+        WarningInFunction
+            << "time " << timeName() << " is named at the largest precision, "
+            << maxPrecision_ << ": its name may be a neighbouring step's"
+            << endl;
+    }
 }
 
 
@@ -119,6 +180,7 @@ Foam::restartableTime::restartableTime
 :
     Time(ctrlDictName, args),
     anchor_(startTime_),
+    anchorInterval_(writeInterval_),
     writesBeforeStart_(0)
 {
     restoreState();
@@ -137,6 +199,7 @@ Foam::restartableTime::restartableTime
 
 void Foam::restartableTime::setDeltaT(const scalar deltaT, const bool adjust)
 {
+    followIntervalChange();
     Time::setDeltaT(deltaT, false);
     if (!adjust)
     {
@@ -168,6 +231,42 @@ void Foam::restartableTime::setDeltaT(const scalar deltaT, const bool adjust)
 }
 
 
+void Foam::restartableTime::followIntervalChange()
+{
+    // Time rescales its count of writes from this run's start when the
+    // controlDict's writeInterval changes in a run; the writes before the
+    // start were counted in the old interval: count from this run's start
+    if (writeInterval_ != anchorInterval_)
+    {
+        anchor_ = startTime_;
+        writesBeforeStart_ = 0;
+        anchorInterval_ = writeInterval_;
+    }
+}
+
+
+Foam::Time& Foam::restartableTime::operator++()
+{
+    followIntervalChange();
+    if (subCycling_ || writeControl_ != wcAdjustableRunTime)
+    {
+        return Time::operator++();
+    }
+
+    // Time decides an adjustableRunTime write from this run's start time:
+    // from the anchor instead, where setDeltaT lands the steps, so that a
+    // run restarted off its write times (after a stop on a signal) writes at
+    // the first run's write times
+    const scalar start = startTime_;
+    startTime_ = anchor_;
+    writeTimeIndex_ += writesBeforeStart_;
+    Time::operator++();
+    writeTimeIndex_ -= writesBeforeStart_;
+    startTime_ = start;
+    return *this;
+}
+
+
 bool Foam::restartableTime::writeObject
 (
     IOstream::streamFormat fmt,
@@ -181,6 +280,8 @@ bool Foam::restartableTime::writeObject
     reduce(signal, maxOp<label>());
     if (signal)
     {
+        restartableTime& self = const_cast<restartableTime&>(*this);
+        self.nameTheStepExactly();
         Info<< nl << "Signal " << signal << " ("
             << (
                    signal == SIGINT ? "SIGINT"
@@ -189,7 +290,6 @@ bool Foam::restartableTime::writeObject
                )
             << "): writing time " << timeName() << " and stopping" << nl
             << endl;
-        restartableTime& self = const_cast<restartableTime&>(*this);
         self.writeTime_ = true;
         stopAt(saWriteNow);
         endTime_ = value();
