@@ -1,8 +1,9 @@
 """Helpers shared by the benchmark scripts that build their cases from a
 tutorial: editing a dictionary in place (by pattern, or an entry through
-foamDictionary), and the graded mesh of a settling column (uniform around the
+foamDictionary), the decomposition of a case, and the graded mesh of a settling column (uniform around the
 vertical axis, growing towards the side walls).
 """
+import math
 import os
 import re
 import subprocess
@@ -33,6 +34,16 @@ def foam_set(case, path, entry, value):
     whole dictionary back"""
     subprocess.run(["foamDictionary", os.path.join(case, path), "-entry", entry, "-set",
                     str(value)], check=True, capture_output=True)
+
+
+def decompose_dict(case, cuts):
+    """Write case/system/decomposeParDict: method simple, cuts the number of
+    pieces along x, y and z"""
+    n = " ".join(str(c) for c in cuts)
+    with open(os.path.join(case, "system", "decomposeParDict"), "w") as f:
+        f.write("FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }\n"
+                f"numberOfSubdomains {math.prod(cuts)};\nmethod simple;\n"
+                f"simpleCoeffs {{ n ({n}); delta 0.001; }}\n")
 
 
 def growth(L, dx, n):

@@ -75,17 +75,21 @@ void Foam::restartableTime::restoreState()
     const scalar exactValue = dict.get<scalar>("value");
     const int timePrecision =
         controlDict().getOrDefault<int>("timePrecision", 6);
-    bool named = false;
-    for (int p = timePrecision; p <= maxPrecision_ && !named; ++p)
+    auto names = [&](int p) { return Time::timeName(exactValue, p) == name; };
+    int p = timePrecision;
+    while (p < maxPrecision_ && !names(p))
     {
-        named = (Time::timeName(exactValue, p) == name);
-        precision_ = p;
+        ++p;
     }
-    for (int p = 1; p < timePrecision && !named; ++p)
+    if (!names(p))
     {
-        named = (Time::timeName(exactValue, p) == name);
-        precision_ = p;
+        p = 1;
+        while (p < timePrecision && !names(p))
+        {
+            ++p;
+        }
     }
+    precision_ = p;
     setTime(exactValue, timeIndex());
     if (timeName() != name)
     {
