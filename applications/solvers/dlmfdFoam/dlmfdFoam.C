@@ -69,6 +69,7 @@ Usage
 
 #include "fvCFD.H"
 #include "dynamicFvMesh.H"
+#include "dynamicRefineFvMesh.H"
 #include "CorrectPhi.H"
 #include "particleRefinementTargets.H"
 #include "singlePhaseTransportModel.H"
