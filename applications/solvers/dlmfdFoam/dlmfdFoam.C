@@ -55,8 +55,9 @@ Usage
     made conservative again (CorrectPhi, fvSolution's pcorr solver; PIMPLE
     correctPhi, on by default), the pressure's reference cell is chosen
     again, and the particles' cell data made again
-    (Foam::dlmfdCoupling::updateMesh). Refused: 2D meshes, meshes whose
-    points move, fluidStepForce penalty.
+    (Foam::dlmfdCoupling::updateMesh). Refused: 2D meshes, any mesh other
+    than staticFvMesh, dynamicRefineFvMesh or one derived from it (points
+    that move, other topology changers), fluidStepForce penalty.
 
     With "fluid off" in constant/sceneProperties the case is a dry granular
     scene: no fluid field, transport model or coupling is made, the
