@@ -13,6 +13,7 @@ License
 
 #include "restartableTime.H"
 #include "IFstream.H"
+#include "IOdictionary.H"
 #include "OFstream.H"
 #include "OSspecific.H"
 #include "Pstream.H"
@@ -45,6 +46,69 @@ void Foam::restartableTime::catchSignals()
                 << "cannot set the handler of signal " << sig
                 << exit(FatalError);
         }
+    }
+}
+
+
+void Foam::restartableTime::findStartFolder()
+{
+    // Time looks for a start folder named at a raised precision from the
+    // largest precision down, and stops where two precisions name the value
+    // alike: a value that prints alike at 18 and 17 digits (81.10424886015
+    // read back as 81.104248860149994) is never tried at 13 to 16 digits,
+    // and the run would start from a folder that does not exist. Search
+    // upwards from the precision in use instead
+    if (fileHandler().exists(timePath(), false))
+    {
+        return;
+    }
+    const int oldPrecision = precision_;
+    int p = oldPrecision + 1;
+    for (; p <= maxPrecision_; ++p)
+    {
+        precision_ = p;
+        setTime(startTime_, 0);
+        if (fileHandler().exists(timePath(), false))
+        {
+            break;
+        }
+    }
+    if (p > maxPrecision_)
+    {
+        precision_ = oldPrecision;
+        setTime(startTime_, 0);
+        return;
+    }
+    Info<< "Time precision raised from " << oldPrecision << " to " << p
+        << " to find the start time's folder " << timeName() << nl << endl;
+
+    // What Time reads from the start folder once it has found it
+    IOdictionary timeDict
+    (
+        IOobject
+        (
+            "time",
+            timeName(),
+            "uniform",
+            *this,
+            IOobject::READ_IF_PRESENT,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    if
+    (
+        controlDict().getOrDefault("adjustTimeStep", false)
+     && timeDict.readIfPresent("deltaT", deltaT_)
+    )
+    {
+        deltaTSave_ = deltaT_;
+        deltaT0_ = deltaT_;
+    }
+    timeDict.readIfPresent("deltaT0", deltaT0_);
+    if (timeDict.readIfPresent("index", startTimeIndex_))
+    {
+        timeIndex_ = startTimeIndex_;
     }
 }
 
@@ -187,6 +251,7 @@ Foam::restartableTime::restartableTime
     anchorInterval_(writeInterval_),
     writesBeforeStart_(0)
 {
+    findStartFolder();
     restoreState();
     catchSignals();
     if (writeFormat() == IOstream::ASCII && IOstream::defaultPrecision() < 17)
