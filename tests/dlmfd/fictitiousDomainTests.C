@@ -110,7 +110,7 @@ void totals
 
 TEST(fictitiousDomain, constraintHoldsAndMomentumIsKeptForAnyDensityRatio)
 {
-    for (const word treatment : {"fluidStencil", "ghostCells"})
+    const word treatment("ghostCells");
     for (const scalar m : {0.5, 1.0, 1.01, 3.0})
     {
         test::foamTestCase tc;
@@ -177,7 +177,7 @@ TEST(fictitiousDomain, constraintHoldsAndMomentumIsKeptForAnyDensityRatio)
 
 TEST(fictitiousDomain, rigidFluidNeedsNoForceAndFixedBodiesStayFixed)
 {
-    for (const word treatment : {"fluidStencil", "ghostCells"})
+    const word treatment("ghostCells");
     {
     SCOPED_TRACE(treatment);
     test::foamTestCase tc;
@@ -264,7 +264,7 @@ TEST(fictitiousDomain, bodiesListedInAnotherOrderWithTheirGlobalIndicesGiveTheSa
     scene[2].R = quaternion(normalised(vector(1, 2, 3)), 0.7).R();
     const labelList order({2, 0, 1});
 
-    for (const word treatment : {"fluidStencil", "ghostCells"})
+    const word treatment("ghostCells");
     {
         SCOPED_TRACE(treatment);
         dictionary dict;
@@ -410,7 +410,7 @@ TEST(fictitiousDomain, bodyAcrossPeriodicBoundariesActsAsInAnOpenBox)
     B.omega = vector(0.5, 0, -0.2);
     B.excessDensity = 1;
     const point corner(0.02, 0.97, 0.05);
-    for (const word treatment : {"fluidStencil", "ghostCells"})
+    const word treatment("ghostCells");
     {
     SCOPED_TRACE(treatment);
     dictionary dict;

@@ -18,9 +18,8 @@ Description
     the faces between the ghost and the fluid cells, the ghost cells moving
     rigidly; every cell within a cell of the surface has fluid to fit,
     whatever the resolution (no point is left out); no fluid cell is
-    forced, in a two-cell gap between two cubes neither; with a cut-cell
-    forcing, only those the surface cuts (centres less than half a cell
-    out), each for the share its forcing gives it.
+    forced, in a two-cell gap between two cubes neither; a retired option
+    is refused naming what replaced it.
 
 \*---------------------------------------------------------------------------*/
 
@@ -310,17 +309,14 @@ TEST(ghostCells, everySurfaceCellHasFluidToFitAtAnyResolution)
 }
 
 
-TEST(ghostCells, withoutCutCellForcingNoFluidCellIsForcedNotEvenInATwoCellGap)
+TEST(ghostCells, noFluidCellIsForcedNotEvenInATwoCellGap)
 {
-    // With ghostCutCells none no fluid cell is forced at all, those of a
-    // two-cell gap between two cubes included; the cubes' own cells take
-    // the whole force
+    // No fluid cell is forced at all, those of a two-cell gap between two
+    // cubes included; the cubes' own cells take the whole force
     twoCubesInAGap g;
     volVectorField& U = g.tU.ref();
     const vectorField before(U.primitiveField());
-    dictionary dict(ghostCells());
-    dict.add("ghostCutCells", word("none"));
-    fictitiousDomain fd(g.mesh, dict);
+    fictitiousDomain fd(g.mesh, ghostCells());
     const List<fictitiousDomain::result>& res = fd.solve(U, g.bodies, 0.01);
     label outside = 0, inGap = 0;
     forAll(U, c)
@@ -349,165 +345,12 @@ TEST(ghostCells, withoutCutCellForcingNoFluidCellIsForcedNotEvenInATwoCellGap)
 }
 
 
-TEST(ghostCells, withCutCellsOnlyCutFluidCellsAreForcedEvenInATwoCellGap)
-{
-    // ghostCutCells solidFraction and ramp: the
-    // force density is zero in every cell more than half a cell out of both
-    // cubes (the cells their surfaces do not cut), and the fluid there keeps
-    // its velocity; in the gap, one row of cells lies 0.49 cells from a face
-    // (cut, forced) and the other 0.51 (free)
-    for (const word cut : {"solidFraction", "ramp"})
-    {
-        SCOPED_TRACE(cut);
-        twoCubesInAGap g;
-        volVectorField& U = g.tU.ref();
-        const vectorField before(U.primitiveField());
-        const scalar h = twoCubesInAGap::h;
-        dictionary dict(ghostCells());
-        dict.add("ghostCutCells", cut);
-        fictitiousDomain fd(g.mesh, dict);
-        fd.setFluidRelaxation(scalarField(g.mesh.nCells(), 0.5));
-        const List<fictitiousDomain::result>& res = fd.solve(U, g.bodies, 0.01);
-        label free = 0, freeInGap = 0, cutInGap = 0;
-        forAll(U, c)
-        {
-            const point& x = g.mesh.C()[c];
-            scalar out = GREAT;
-            for (const auto& b : g.bodies)
-            {
-                out = min
-                (
-                    out,
-                    particleGeometry::outsideDistanceBound(g.cube, b.centre, b.R, x)
-                );
-            }
-            const bool inGap = twoCubesInAGap::inGap(x, h);
-            if (out < 0.5*h)
-            {
-                cutInGap += inGap && out > 0 && mag(fd.source()[c]) > 0;
-                continue;
-            }
-            ++free;
-            freeInGap += inGap;
-            EXPECT_EQ(mag(fd.source()[c]), 0) << str(x);
-            EXPECT_EQ(mag(U[c] - before[c]), 0) << str(x);
-        }
-        EXPECT_GT(freeInGap, 20);
-        EXPECT_GT(cutInGap, 20);
-        EXPECT_GT(free, 10000);
-        for (const auto& r : res)
-        {
-            EXPECT_GT(mag(r.sumLambda), 0);
-            EXPECT_EQ(r.nSurfaceDropped, 0);
-        }
-    }
-}
-
-
-TEST(ghostCells, cutCellsAreForcedInProportionToTheShareTheirForcingGivesThem)
-{
-    // A fixed cube of edge 0.3 (h = 1/24) whose -x face lies 0.1 cell short
-    // of a row of cell centres (a fluid cell s = 0.1 h out) and whose +x
-    // face 0.3 cell beyond one (a fluid cell s = 0.7 h out, not cut). Both
-    // forcings move a cut cell towards the same fitted profile, by the
-    // step share phi beta/(phi beta + 1 - phi) of its way (beta the fluid's
-    // relaxation over the step), phi its part inside the body with
-    // solidFraction, 1/2 - s/h_n (0.4 under the middle of the -x face), and
-    // 1 - 2 s/h with ramp (0.8 there): the two force densities of every cut
-    // cell differ by the ratio of their shares, and no other cell is forced
-    test::foamTestCase tc;
-    const scalar h = 1.0/24, edge = 0.3;
-    const fvMesh& mesh = tc.makeBoxMesh(24, 24, 24, vector::one);
-    tmp<volVectorField> tU = zeroU(mesh);
-    using constant::mathematical::twoPi;
-    forAll(tU(), c)
-    {
-        const point& x = mesh.C()[c];
-        tU.ref()[c] = vector
-        (
-            0.1*std::sin(twoPi*x.y()), 0.05*std::cos(twoPi*x.z()) + 0.03,
-            0.08*std::sin(twoPi*x.x())
-        );
-    }
-    particleShapes::platonicSolid cube("cube", "cube", edge);
-    List<fictitiousDomain::body> bodies(1);
-    bodies[0].shape = &cube;
-    bodies[0].excessDensity = 1;
-    bodies[0].free = false;
-    bodies[0].centre = point(0.5 + 0.2*h, 0.5, 0.5);
-
-    const scalar beta = 0.7;
-    const auto step = [&](const scalar phi)
-    {
-        return phi >= 1 ? 1 : phi*beta/(phi*beta + 1 - phi);
-    };
-    const auto sourceWith = [&](const word& cut)
-    {
-        volVectorField U("U", tU());
-        dictionary dict(ghostCells());
-        dict.add("ghostCutCells", cut);
-        fictitiousDomain fd(mesh, dict);
-        EXPECT_TRUE(fd.needsFluidRelaxation());
-        fd.setFluidRelaxation(scalarField(mesh.nCells(), beta));
-        fd.solve(U, bodies, 0.01);
-        return vectorField(fd.source().primitiveField());
-    };
-    const vectorField solidFraction(sourceWith("solidFraction"));
-    const vectorField ramp(sourceWith("ramp"));
-
-    label nMiddle = 0, nCut = 0;
-    forAll(ramp, c)
-    {
-        const point& x = mesh.C()[c];
-        point p;
-        vector n;
-        const scalar s =
-            -particleGeometry::depth(cube, bodies[0].centre, bodies[0].R, x, p, n);
-        if (s <= 0)
-        {
-            continue;
-        }
-        if (s >= 0.5*h)
-        {
-            EXPECT_EQ(mag(ramp[c]), 0) << str(x);
-            EXPECT_EQ(mag(solidFraction[c]), 0) << str(x);
-            continue;
-        }
-        const scalar hn = h*(mag(n.x()) + mag(n.y()) + mag(n.z()));
-        const scalar phiS = min(max(0.5 - s/hn, scalar(0)), scalar(1));
-        // (ramp's half cell is fictitiousDomain's cut-cell limit, half a
-        // cell less a rounding margin of 1e-6)
-        const scalar phiR = 1 - s/(0.5*(1 - 1e-6)*h);
-        if
-        (
-            mag(x.y() - 0.5) < 0.1 && mag(x.z() - 0.5) < 0.1
-         && mag(x.x() - (0.5 + 0.2*h - edge/2 - 0.1*h)) < 1e-9
-        )
-        {
-            EXPECT_NEAR(phiS, 0.4, 1e-9) << str(x);
-            EXPECT_NEAR(phiR, 0.8, 1e-6) << str(x);
-            ++nMiddle;
-        }
-        nCut += mag(ramp[c]) > 0;
-        // (a cell whose solid fraction is zero, s >= h_n/2 near an edge,
-        // is not forced by solidFraction at all)
-        const vector expected = (step(phiS)/step(phiR))*ramp[c];
-        EXPECT_LT(mag(solidFraction[c] - expected), 1e-9*(1 + mag(ramp[c])))
-            << str(x) << " s/h " << s/h << ": expected " << str(expected)
-            << ", got " << str(solidFraction[c]);
-    }
-    // (the cut cells are the -x face's 8 x 8: the other faces leave the
-    // nearest centres 0.1 cell inside or 0.7 and 0.9 cell out)
-    EXPECT_GT(nMiddle, 10);
-    EXPECT_EQ(nCut, 64);
-}
-
-
 TEST(ghostCells, badSettingsAreRefusedNamingTheValidOnes)
 {
-    // A misspelt treatment lists the valid names; a fit narrower than one
+    // A misspelt treatment lists the valid name; a fit narrower than one
     // and a half cells (it must reach a cell beyond the cut cells) is
-    // refused with the keyword, the value and what is allowed
+    // refused with the keyword, the value and what is allowed; a retired
+    // keyword with what replaced it
     test::foamTestCase tc;
     const fvMesh& mesh = tc.makeBoxMesh(8, 8, 8, vector::one);
     FatalError.throwExceptions();
@@ -516,9 +359,8 @@ TEST(ghostCells, badSettingsAreRefusedNamingTheValidOnes)
     {
         fictitiousDomain fd(mesh, testInput::parse("surfaceTreatment ghostCell;"));
     });
-    EXPECT_NE(typo.find("ghostCell"), std::string::npos) << typo;
-    EXPECT_NE(typo.find("fluidStencil"), std::string::npos) << typo;
-    EXPECT_NE(typo.find("ghostCells"), std::string::npos) << typo;
+    EXPECT_NE(typo.find("surfaceTreatment ghostCell "), std::string::npos) << typo;
+    EXPECT_NE(typo.find("valid: 1 ( ghostCells )"), std::string::npos) << typo;
     const std::string narrow = testInput::errorOf([&]
     {
         fictitiousDomain fd
@@ -541,33 +383,34 @@ TEST(ghostCells, badSettingsAreRefusedNamingTheValidOnes)
     {
         EXPECT_NE(shear.find(name), std::string::npos) << shear;
     }
-    // The cut cells' solid fraction needs the fluid step's relaxation of
-    // the time step under way, and a negative one is refused
-    fictitiousDomain fd
-    (
-        mesh,
-        testInput::parse("surfaceTreatment ghostCells; ghostCutCells solidFraction;")
-    );
-    volVectorField U
-    (
-        IOobject("U", mesh.time().timeName(), mesh),
-        mesh,
-        dimensionedVector(dimVelocity, Zero)
-    );
-    const std::string unset = testInput::errorOf([&]
+    // Each retired keyword (or value) is named with its value and what
+    // replaced it, before anything is made
+    const std::pair<const char*, const char*> retired[] =
     {
-        fd.solve(U, List<fictitiousDomain::body>(), 0.01);
-    });
-    EXPECT_NE(unset.find("solidFraction needs the fluid step's momentum diagonal"),
-        std::string::npos) << unset;
-    scalarField beta(mesh.nCells(), 1);
-    beta[3] = -0.5;
-    const std::string negative = testInput::errorOf([&]
+        {"surfaceTreatment fluidStencil;", "surfaceTreatment fluidStencil"},
+        {"surfaceStencilRadius 1.2;", "surfaceStencilRadius 1.2"},
+        {"tolerance 1e-8;", "no CG"},
+        {"ghostCutCells solidFraction;", "ghostCutCells solidFraction"},
+        {"ghostCutCells none;", "no fluid cell is forced"},
+        {"fluidStepForce penalty;", "fluidStepForce penalty"},
+        {"penaltyFactor 10;", "the last multipliers' force"}
+    };
+    for (const auto& r : retired)
     {
-        fd.setFluidRelaxation(beta);
+        const std::string message = testInput::errorOf([&]
+        {
+            fictitiousDomain fd(mesh, testInput::parse(r.first));
+        });
+        EXPECT_NE(message.find(r.second), std::string::npos) << r.first << ": " << message;
+        EXPECT_NE(message.find("is no longer read"), std::string::npos) << r.first << ": " << message;
+    }
+    // ghostFitRadius is read with ghostShear viscous only
+    const std::string unread = testInput::errorOf([&]
+    {
+        fictitiousDomain fd(mesh, testInput::parse("ghostFitRadius 2;"));
     });
-    EXPECT_NE(negative.find("negative in cell 3"), std::string::npos) << negative;
-    EXPECT_NE(negative.find("-0.5"), std::string::npos) << negative;
+    EXPECT_NE(unread.find("ghostFitRadius is read with ghostShear viscous only"),
+        std::string::npos) << unread;
 }
 
 

@@ -57,7 +57,7 @@ Usage
     again, and the particles' cell data made again
     (Foam::dlmfdCoupling::updateMesh). Refused: 2D meshes, any mesh other
     than staticFvMesh, dynamicRefineFvMesh or one derived from it (points
-    that move, other topology changers), fluidStepForce penalty.
+    that move, other topology changers).
 
     With "fluid off" in constant/sceneProperties the case is a dry granular
     scene: no fluid field, transport model or coupling is made, the
@@ -171,11 +171,6 @@ int main(int argc, char *argv[])
             while (pimple.correct())
             {
                 #include "pEqn.H"
-            }
-
-            if (particles.valid() && particles->penalised())
-            {
-                particles->fluidStepEnd(UEqn.H());
             }
 
             laminarTransport.correct();

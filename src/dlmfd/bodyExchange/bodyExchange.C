@@ -23,12 +23,8 @@ Ostream& operator<<(Ostream& os, const fictitiousDomain::contribution& c)
 {
     os  << c.body << token::SPACE << c.centres << token::SPACE << c.volumes
         << token::SPACE << c.u << token::SPACE << c.nInterior
-        << token::SPACE << c.nCut
-        << token::SPACE << c.deviation << token::SPACE << c.relaxation
-        << token::SPACE << c.released
-        << token::SPACE << c.releasedMoment
-        << token::SPACE << c.surfacePoint << token::SPACE << c.stencilStart
-        << token::SPACE << c.stencilCell;
+        << token::SPACE << c.deviation << token::SPACE << c.released
+        << token::SPACE << c.releasedMoment;
     return os;
 }
 
@@ -36,9 +32,7 @@ Ostream& operator<<(Ostream& os, const fictitiousDomain::contribution& c)
 Istream& operator>>(Istream& is, fictitiousDomain::contribution& c)
 {
     is  >> c.body >> c.centres >> c.volumes >> c.u >> c.nInterior
-        >> c.nCut
-        >> c.deviation >> c.relaxation >> c.released >> c.releasedMoment
-        >> c.surfacePoint >> c.stencilStart >> c.stencilCell;
+        >> c.deviation >> c.released >> c.releasedMoment;
     return is;
 }
 

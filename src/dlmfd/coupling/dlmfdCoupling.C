@@ -324,13 +324,6 @@ Foam::dlmfdCoupling::dlmfdCoupling
         mesh,
         properties_.optionalSubDict("fictitiousDomain")
     ),
-    penalty_
-    (
-        mesh,
-        properties_.optionalSubDict("fictitiousDomain"),
-        fd_.treatment(),
-        fd_.search()
-    ),
     links_(mesh, fd_.hasWallLinks()),
     ddtCoeff_(1),
     ddtCoeffTimeIndex_(-1),
@@ -372,11 +365,10 @@ Foam::dlmfdCoupling::dlmfdCoupling
             << " >= 1 (1: a row of particles.dat every step)"
             << exit(FatalIOError);
     }
-    wordList fdKeywords(fictitiousDomain::keywords());
-    fdKeywords.append(fluidStepPenalty::keywords());
     knownKeywords::require
     (
-        properties_, fdKeywords, "fictitiousDomain", propertiesFile
+        properties_, fictitiousDomain::keywords(), "fictitiousDomain",
+        propertiesFile
     );
 
     // The links' momentum, counted once per step, leaks inside the outer
@@ -479,31 +471,10 @@ Foam::dlmfdCoupling::dlmfdCoupling
                 << m << " is not allowed; it must be > 0"
                 << exit(FatalError);
         }
-        // The penalty holds a free body at its velocity of the step's
-        // start while the fluid moves: explicit in the added mass, it
-        // oscillated and grew for ten Cate's E2 sphere (m = 1.14) and ran
-        // steadily at m = 2 (benchmarks/accuracyCost, README)
-        if
-        (
-            penalty_.on() && p.motion() == rigidParticle::motionKind::free
-         && m < 2
-        )
-        {
-            FatalErrorInFunction
-                << "particle " << all.id(i) << ": density ratio " << m
-                << " is not allowed with constant/dlmfdProperties"
-                << " fictitiousDomain/fluidStepForce penalty; a free"
-                << " particle needs m >= 2 there (fixed and prescribed ones"
-                << " any m), or fluidStepForce multipliers" << exit(FatalError);
-        }
     }
     Info<< "    walls " << all.walls().size() << ", contact law "
         << "sub-step T_c/N = " << all.maxSubStep() << " s" << nl
         << "    coupling: " << fd_.describe().c_str() << nl
-        << "    fluid step held by "
-        << (penalty_.on()
-          ? "a penalty, K dt = " + Foam::name(penalty_.factor())
-          : word("the last multipliers' force")) << nl
         << "    periods " << fd_.period() << " m (0: not periodic); "
         << (Pstream::parRun() ? "granular step on " : "")
         << (owned_ ? "every one of " : Pstream::parRun() ? "the master of " : "")
@@ -511,12 +482,6 @@ Foam::dlmfdCoupling::dlmfdCoupling
         << nl;
     all.effects().report(Info);
     Info<< endl;
-
-    // On a mesh whose cells may change, before anything is written
-    if (mesh.dynamic())
-    {
-        checkChangingMesh();
-    }
 
     // The time series: the master's whole scene, or with owned particles
     // on several ranks each rank's own particles in its processor folder,

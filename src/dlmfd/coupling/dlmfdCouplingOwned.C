@@ -25,18 +25,6 @@ Description
 
 void Foam::dlmfdCoupling::setOwned(const sceneEffects& effects)
 {
-    if (penalty_.on())
-    {
-        // The penalty gives every cell to its nearest body, of the whole
-        // scene; with owned particles a rank holds those near its cells
-        FatalErrorInFunction
-            << "constant/dlmfdProperties: fictitiousDomain/fluidStepForce"
-            << " penalty needs every particle on every rank, and"
-            << " constant/collisionProperties selects particleDistribution"
-            << " owned. Use fluidStepForce multipliers (the default) or"
-            << " particleDistribution master" << exit(FatalError);
-    }
-
     // The boxes: the mesh's decomposition where its ranks' cells make a
     // grid of boxes numbered x fastest (simple, hierarchical xyz), so that
     // a particle's owner is the rank its centre's cell is on; else the

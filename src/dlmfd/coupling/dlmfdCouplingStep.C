@@ -100,22 +100,6 @@ Foam::tensor Foam::dlmfdCoupling::predictedRotation
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::dlmfdCoupling::fluidStepMatrix(const fvVectorMatrix& UEqn)
-{
-    if (!fd_.needsFluidRelaxation())
-    {
-        return;
-    }
-    // beta = dt A_f: the diagonal of U's equation per unit volume less the
-    // time scheme's a (1/dt Euler, about 1.5/dt backward), times dt; the
-    // fluid step carries the cut cells' force (with a penalty too)
-    const volVectorField& U = UEqn.psi();
-    const scalarField A(UEqn.A()().primitiveField());
-    const scalarField a(fvm::ddt(U)().A()().primitiveField());
-    fd_.setFluidRelaxation(mesh_.time().deltaTValue()*(A - a));
-}
-
-
 void Foam::dlmfdCoupling::checkPressureCorrectors
 (
     const volScalarField& nu,
@@ -193,53 +177,6 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::dlmfdCoupling::wallLinkMatrix
     tmp<fvVectorMatrix> m = links_.matrix(U, nu);
     fdSeconds_ += clock.timeIncrement();
     return m;
-}
-
-
-Foam::tmp<Foam::fvVectorMatrix> Foam::dlmfdCoupling::penalty
-(
-    const volVectorField& U
-)
-{
-    // The bodies where the predictor will put them: the fluid step moves
-    // with them from its start
-    clockTime clock;
-    vectorField V0, omega0;
-    List<fictitiousDomain::body> bodies(predictedBodies(V0, omega0));
-    // A free body holds its cells at its velocity of the step's start, not
-    // at the predictor's V* = V + dt g: with V* the fluid step pushed the
-    // fluid around as if the body fell freely, and the ten Cate E2 sphere
-    // (m = 1.14) rose at 0.4 m/s after its first step
-    forAll(bodies, i)
-    {
-        if (bodies[i].free)
-        {
-            bodies[i].V = V0[i];
-            bodies[i].omega = omega0[i];
-        }
-    }
-    const scalar dt = mesh_.time().deltaTValue();
-    tmp<fvVectorMatrix> m = penalty_.matrix
-    (
-        U, bodies, fd_.deviation(), fd_.period(), dt,
-        ddtCoeff(U)
-    );
-    fdSeconds_ += clock.timeIncrement();
-    return m;
-}
-
-
-void Foam::dlmfdCoupling::checkChangingMesh() const
-{
-    if (penalty_.on())
-    {
-        FatalErrorInFunction
-            << "constant/dlmfdProperties: fictitiousDomain/fluidStepForce"
-            << " penalty keeps its cells from step to step and cannot follow"
-            << " a mesh whose cells change (constant/dynamicMeshDict); use"
-            << " fluidStepForce multipliers (the default) on such a mesh"
-            << exit(FatalError);
-    }
 }
 
 
@@ -337,26 +274,7 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
         fd_.rewindToStepStart();
     }
 
-    // (3) Fictitious domain, distributed; its results on the master. With
-    // a penalty in the fluid step, the momentum it gave the fluid is the
-    // bodies' to pay, and the force density is not the fluid step's
-    List<vector> momentum, moment;
-    if (penalty_.on())
-    {
-        penalty_.momentum(U, n, dt, momentum, moment);
-        // backward's history: the step's change of u holds (c - 1)/c of
-        // the last step's, what each body gave this rank's fluid then
-        const scalar c = penalty_.ddtCoeff();
-        if (givenMomentum_.size() == n)
-        {
-            for (label i = 0; i < n; ++i)
-            {
-                momentum[i] += (c - 1)/c*givenMomentum_[i];
-                moment[i] += (c - 1)/c*givenMoment_[i];
-            }
-        }
-        fd_.addReleased(bodies, momentum, moment);
-    }
+    // (3) Fictitious domain, distributed; its results on the master
     if (fd_.hasWallLinks())
     {
         // What the fluid gained at the links in its step, the bodies pay
@@ -384,22 +302,6 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
     }
     const scalar commBefore = fd_.communicationSeconds();
     const List<fictitiousDomain::result>& res = fd_.solve(U, solved, dt);
-    if (penalty_.on())
-    {
-        // What each body gave this rank's fluid in the step: the fluid
-        // step's momentum paid above and the constraint's force density
-        // in the cells the penalty holds next (the cut cells' force stays
-        // in source(), carried by the next fluid step as without penalty,
-        // whose backward history then returns what the step takes out)
-        const vectorField all(fd_.source().primitiveField());
-        fd_.clearSource();
-        penalty_.constraintMomentum
-        (
-            all - fd_.source().primitiveField(), dt, momentum, moment
-        );
-        givenMomentum_.transfer(momentum);
-        givenMoment_.transfer(moment);
-    }
     const scalar fdComm = fd_.communicationSeconds() - commBefore;
     fdSeconds_ += clock.timeIncrement() - fdComm;
     commSeconds_ += fdComm;
@@ -535,22 +437,13 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
     const granularSystem::statistics s =
         owned_ ? owned_->stats() : granular_.stats();
     Info<< "DLM/FD: " << nParticles_ << " particles, " << nPoints << " points";
-    if (fd_.treatment() == fictitiousDomain::surfaceTreatment::ghostCells)
+    // Only ghostShear viscous fits the fluid at its ghost cells
+    Info<< " (" << nSurface << " ghost cells";
+    if (fd_.hasWallShearSource())
     {
-        // Only ghostShear viscous fits the fluid at its ghost cells
-        Info<< " (" << nSurface << " ghost cells";
-        if (fd_.hasWallShearSource())
-        {
-            Info<< ", " << nDropped << " of them with no fluid cell in reach";
-        }
-        Info<< "), momentum balance " << maxError << " m/s";
+        Info<< ", " << nDropped << " of them with no fluid cell in reach";
     }
-    else
-    {
-        Info<< " (" << nDropped << " surface points without a stencil left"
-            << " out), CG iterations <= " << maxIter << ", constraint error "
-            << maxError << " m/s";
-    }
+    Info<< "), momentum balance " << maxError << " m/s";
     if (corrected)
     {
         Info<< "; the last of " << nCorrections_ + 1 << " outer"

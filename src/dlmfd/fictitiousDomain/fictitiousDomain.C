@@ -26,23 +26,6 @@ License
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-const Foam::Enum<Foam::fictitiousDomain::surfaceTreatment>
-Foam::fictitiousDomain::surfaceTreatmentNames
-({
-    {surfaceTreatment::fluidStencil, "fluidStencil"},
-    {surfaceTreatment::ghostCells, "ghostCells"},
-});
-
-
-const Foam::Enum<Foam::fictitiousDomain::cutCellForcing>
-Foam::fictitiousDomain::cutCellForcingNames
-({
-    {cutCellForcing::none, "none"},
-    {cutCellForcing::solidFraction, "solidFraction"},
-    {cutCellForcing::ramp, "ramp"},
-});
-
-
 const Foam::Enum<Foam::fictitiousDomain::ghostShearModel>
 Foam::fictitiousDomain::ghostShearModelNames
 ({
@@ -55,11 +38,11 @@ Foam::fictitiousDomain::ghostShearModelNames
 
 Foam::scalar Foam::fictitiousDomain::reach() const
 {
-    // Ghost cells: the fits' largest radius about a surface point;
-    // surface stencils: their radius, and two cells for the inside search
-    return treatment_ == surfaceTreatment::ghostCells
-        ? ghostFitRadius_
-        : max(scalar(2), stencils_.radius());
+    // The fits' largest radius about a surface point (with ghostShear
+    // link, whose cells move rigidly, the holders' reach and the
+    // clearance across a period keep this margin: the wall links reach
+    // no further)
+    return ghostFitRadius_;
 }
 
 
@@ -74,25 +57,6 @@ Foam::scalar Foam::fictitiousDomain::cellSize(const scalar V) const
 }
 
 
-Foam::IOobject Foam::fictitiousDomain::ghostFieldIO
-(
-    const fvMesh& mesh,
-    const word& name
-) const
-{
-    // Read and written with the ghost cells only
-    const bool ghost = treatment_ == surfaceTreatment::ghostCells;
-    return IOobject
-    (
-        name,
-        mesh.time().timeName(),
-        mesh,
-        ghost ? IOobject::READ_IF_PRESENT : IOobject::NO_READ,
-        ghost ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
-    );
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::fictitiousDomain::fictitiousDomain
@@ -102,21 +66,7 @@ Foam::fictitiousDomain::fictitiousDomain
 )
 :
     mesh_(mesh),
-    treatment_
-    (
-        surfaceTreatmentNames.getOrDefault
-        (
-            "surfaceTreatment", dict, surfaceTreatment::ghostCells
-        )
-    ),
     ghostFitRadius_(dict.getOrDefault<scalar>("ghostFitRadius", 1.5)),
-    cutCells_
-    (
-        cutCellForcingNames.getOrDefault
-        (
-            "ghostCutCells", dict, cutCellForcing::none
-        )
-    ),
     ghostShear_
     (
         ghostShearModelNames.getOrDefault
@@ -124,13 +74,6 @@ Foam::fictitiousDomain::fictitiousDomain
             "ghostShear", dict, ghostShearModel::link
         )
     ),
-    stencils_
-    (
-        dict, mesh.nSolutionD() == 2, mesh.bounds().centre().z()
-    ),
-    tolerance_(dict.getOrDefault<scalar>("tolerance", 1e-10)),
-    maxIterations_(dict.getOrDefault<label>("maxIterations", 1000)),
-    multipliers_(tolerance_, maxIterations_, mesh.nSolutionD() == 2),
     search_(mesh),
     twoD_(mesh.nSolutionD() == 2),
     images_(search_, mesh.bounds()),
@@ -150,13 +93,27 @@ Foam::fictitiousDomain::fictitiousDomain
     ),
     deviation_
     (
-        ghostFieldIO(mesh, "ghostDeviation"),
+        IOobject
+        (
+            "ghostDeviation",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::READ_IF_PRESENT,
+            IOobject::AUTO_WRITE
+        ),
         mesh,
         dimensionedVector(dimVelocity, Zero)
     ),
     ghostOwner_
     (
-        ghostFieldIO(mesh, "ghostOwner"),
+        IOobject
+        (
+            "ghostOwner",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::READ_IF_PRESENT,
+            IOobject::AUTO_WRITE
+        ),
         mesh,
         dimensionedScalar("none", dimless, -1)
     ),
@@ -179,8 +136,6 @@ Foam::fictitiousDomain::fictitiousDomain
     stepStartDeviation_(),
     stepStartOwner_(),
     stepStartIndex_(-1),
-    fluidRelaxation_(),
-    fluidRelaxationIndex_(-1),
     results_(),
     commSeconds_(0),
     received_(),
@@ -193,6 +148,10 @@ Foam::fictitiousDomain::fictitiousDomain
     largestRadius_(0),
     holderPartners_()
 {
+    // A keyword of a retired option would be ignored in silence: refused
+    // with what replaced it
+    refuseRetired(dict, dict.name());
+
     // Before anything is solved or written: a mesh the coupling is not
     // validated on stops here, not by diverging later
     hexCellCheck::require(mesh, "DLM/FD");
@@ -203,60 +162,19 @@ Foam::fictitiousDomain::fictitiousDomain
             << " allowed; it must be >= 1.5 (in cell sizes)"
             << exit(FatalIOError);
     }
-    if (!(tolerance_ > 0 && tolerance_ < 1))
-    {
-        FatalIOErrorInFunction(dict)
-            << "tolerance = " << tolerance_ << " is not allowed;"
-            << " 0 < tolerance < 1 (relative residual of the CG solves)"
-            << exit(FatalIOError);
-    }
-    if (maxIterations_ < 1)
-    {
-        FatalIOErrorInFunction(dict)
-            << "maxIterations = " << maxIterations_ << " is not allowed;"
-            << " it must be >= 1" << exit(FatalIOError);
-    }
-    // A keyword the selected treatment does not read would be ignored in
-    // silence: refused, with the treatment that reads it
-    const wordList stencilOnly
-    ({
-        "surfacePoints", "surfacePointSpacing", "surfaceStencilRadius",
-        "surfacePointRetraction", "tolerance", "maxIterations"
-    });
-    const wordList ghostOnly
-    ({
-        "ghostFitRadius", "ghostCutCells", "ghostShear", "fluidStepForce",
-        "penaltyFactor"
-    });
-    const bool ghost = treatment_ == surfaceTreatment::ghostCells;
-    for (const word& key : (ghost ? stencilOnly : ghostOnly))
-    {
-        if (dict.found(key, keyType::LITERAL))
-        {
-            FatalIOErrorInFunction(dict)
-                << "fictitiousDomain/" << key << " is read by surfaceTreatment "
-                << (ghost ? "fluidStencil" : "ghostCells") << " only; this"
-                << " dictionary selects " << surfaceTreatmentNames[treatment_]
-                << ". Remove the entry or select the treatment that reads it"
-                << exit(FatalIOError);
-        }
-    }
-    // The default ghost cells move rigidly and no cut cell is held: nothing
-    // is fitted, so a fit radius would be ignored
+    // The default ghost cells move rigidly: nothing is fitted, so a fit
+    // radius would be ignored
     if
     (
-        ghost
-     && ghostShear_ == ghostShearModel::link
-     && cutCells_ == cutCellForcing::none
+        ghostShear_ == ghostShearModel::link
      && dict.found("ghostFitRadius", keyType::LITERAL)
     )
     {
         FatalIOErrorInFunction(dict)
-            << "fictitiousDomain/ghostFitRadius is read with ghostShear viscous"
-            << " or a ghostCutCells forcing (solidFraction, ramp) only; this"
-            << " dictionary selects ghostShear link and ghostCutCells none,"
-            << " which fit nothing. Remove the entry or select what reads it"
-            << exit(FatalIOError);
+            << "fictitiousDomain/ghostFitRadius is read with ghostShear"
+            << " viscous only; this dictionary selects ghostShear link,"
+            << " which fits nothing. Remove the entry or select ghostShear"
+            << " viscous" << exit(FatalIOError);
     }
     if (twoD_ && mesh.geometricD()[2] > 0)
     {
@@ -272,30 +190,106 @@ Foam::fictitiousDomain::fictitiousDomain
 
 Foam::wordList Foam::fictitiousDomain::keywords()
 {
-    return wordList
+    return wordList({"surfaceTreatment", "ghostShear", "ghostFitRadius"});
+}
+
+
+Foam::List<Foam::fictitiousDomainRetired>
+Foam::fictitiousDomain::retiredKeywords()
+{
+    // The ghost cells with the wall links are more accurate on every row
+    // of the validation table where these options ran beside them
+    // (CHANGELOG.md, benchmarks/validationTable/removedOptions.md)
+    const string ghost
+    (
+        "remove the entry: the ghost cells (surfaceTreatment ghostCells, the"
+        " only treatment) hold the surface"
+    );
+    const string noCutCells
+    (
+        "remove the entry: no fluid cell is forced; the wall's shear reaches"
+        " the cut cells through ghostShear link (the default) or viscous"
+    );
+    const string noPenalty
+    (
+        "remove the entry: the fluid step carries the last multipliers'"
+        " force (the only fluid-step force)"
+    );
+    return List<fictitiousDomainRetired>
     ({
-        "surfaceTreatment", "ghostFitRadius", "ghostCutCells", "ghostShear",
-        "surfacePoints", "surfacePointSpacing", "surfaceStencilRadius",
-        "surfacePointRetraction", "tolerance", "maxIterations"
+        {"surfaceTreatment", "fluidStencil", ghost},
+        {"surfacePoints", "", ghost},
+        {"surfacePointSpacing", "", ghost},
+        {"surfaceStencilRadius", "", ghost},
+        {"surfacePointRetraction", "", ghost},
+        {"tolerance", "", ghost + " with one direct solve per body (no CG)"},
+        {"maxIterations", "", ghost + " with one direct solve per body (no CG)"},
+        {"ghostCutCells", "", noCutCells},
+        {"fluidStepForce", "", noPenalty},
+        {"penaltyFactor", "", noPenalty}
     });
+}
+
+
+void Foam::fictitiousDomain::refuseRetired
+(
+    const dictionary& dict,
+    const fileName& file
+)
+{
+    for (const fictitiousDomainRetired& r : retiredKeywords())
+    {
+        const entry* e = dict.findEntry(r.keyword, keyType::LITERAL);
+        if (!e)
+        {
+            continue;
+        }
+        // The value as written (a word for every retired one)
+        string value;
+        if (e->isStream())
+        {
+            OStringStream os;
+            const ITstream& is = e->stream();
+            forAll(is, i)
+            {
+                os  << (i ? " " : "") << is[i];
+            }
+            value = os.str();
+        }
+        if (!r.value.empty() && value != r.value)
+        {
+            continue;
+        }
+        const std::string written(value.empty() ? "" : " " + value);
+        FatalIOErrorInFunction(dict)
+            << file << ": fictitiousDomain/" << r.keyword
+            << written.c_str()
+            << " is no longer read (retired with the options it served); "
+            << r.replacement.c_str() << exit(FatalIOError);
+    }
+    // The one treatment by name: a misspelt one lists it
+    const word treatment
+    (
+        dict.getOrDefault<word>("surfaceTreatment", "ghostCells")
+    );
+    if (treatment != "ghostCells")
+    {
+        FatalIOErrorInFunction(dict)
+            << file << ": fictitiousDomain/surfaceTreatment " << treatment
+            << " is not a surface treatment; valid: 1 ( ghostCells )"
+            << exit(FatalIOError);
+    }
 }
 
 
 Foam::string Foam::fictitiousDomain::describe() const
 {
     OStringStream os;
-    os  << "surfaceTreatment " << surfaceTreatmentNames[treatment_];
-    if (treatment_ == surfaceTreatment::ghostCells)
+    os  << "surfaceTreatment ghostCells, ghostShear "
+        << ghostShearModelNames[ghostShear_];
+    if (ghostShear_ == ghostShearModel::viscous)
     {
-        os  << ", ghostShear " << ghostShearModelNames[ghostShear_]
-            << ", ghostCutCells " << cutCellForcingNames[cutCells_]
-            << ", ghostFitRadius " << ghostFitRadius_;
-    }
-    else
-    {
-        os  << ", surfaceStencilRadius " << stencils_.radius()
-            << ", tolerance " << tolerance_
-            << ", maxIterations " << maxIterations_;
+        os  << ", ghostFitRadius " << ghostFitRadius_;
     }
     return os.str();
 }
@@ -421,8 +415,6 @@ void Foam::fictitiousDomain::updateMesh()
     stepDdtCoeff_.clear();
     stepStartDeviation_.clear();
     stepStartOwner_.clear();
-    fluidRelaxation_.clear();
-    fluidRelaxationIndex_ = -1;
 
     // A refined cell takes its parent's owner; cells merged into one take
     // one of theirs or a mean, which is no body's index when they held
@@ -464,11 +456,8 @@ void Foam::fictitiousDomain::keepStepStart(const volVectorField& U)
     stepStartSource_ = source_.primitiveField();
     stepDdtCoeff_ =
         mesh_.time().deltaTValue()*fvm::ddt(U)().A()().primitiveField();
-    if (treatment_ == surfaceTreatment::ghostCells)
-    {
-        stepStartDeviation_ = deviation_.primitiveField();
-        stepStartOwner_ = ghostOwner_.primitiveField();
-    }
+    stepStartDeviation_ = deviation_.primitiveField();
+    stepStartOwner_ = ghostOwner_.primitiveField();
 }
 
 
@@ -498,65 +487,6 @@ void Foam::fictitiousDomain::addReleased
 }
 
 
-bool Foam::fictitiousDomain::needsFluidRelaxation() const
-{
-    return
-        treatment_ == surfaceTreatment::ghostCells
-     && (
-            cutCells_ == cutCellForcing::solidFraction
-         || cutCells_ == cutCellForcing::ramp
-        );
-}
-
-
-void Foam::fictitiousDomain::setFluidRelaxation(const scalarField& relaxation)
-{
-    if (relaxation.size() != mesh_.nCells())
-    {
-        FatalErrorInFunction
-            << relaxation.size() << " values for " << mesh_.nCells()
-            << " cells" << exit(FatalError);
-    }
-    fluidRelaxation_ = relaxation;
-    forAll(fluidRelaxation_, c)
-    {
-        // A_f sums the viscous and convective diagonals, >= 0 for a
-        // divergence-free flux; the round-off of the flux's divergence
-        // (linear convection) may leave it a little below
-        scalar& beta = fluidRelaxation_[c];
-        if (beta < -1e-3)
-        {
-            FatalErrorInFunction
-                << "ghostCutCells " << cutCellForcingNames[cutCells_]
-                << ": the fluid's momentum diagonal without its ddt part is"
-                << " negative in cell " << c << " at " << mesh_.C()[c]
-                << " (" << beta << " in units of the step); the cut cells'"
-                << " solid fraction needs a momentum equation whose"
-                << " diagonal holds its own (fvOptions or schemes with a"
-                << " negative implicit source are not supported)"
-                << exit(FatalError);
-        }
-        beta = max(beta, scalar(0));
-    }
-    fluidRelaxationIndex_ = mesh_.time().timeIndex();
-}
-
-
-void Foam::fictitiousDomain::clearSource()
-{
-    // The cells of this step's claims: inside a body, or cut by one
-    vectorField& f = source_.primitiveFieldRef();
-    forAll(f, c)
-    {
-        if (owners_.owner(c) < 0 || owners_.inside(c))
-        {
-            f[c] = Zero;
-        }
-    }
-    source_.correctBoundaryConditions();
-}
-
-
 void Foam::fictitiousDomain::rewindToStepStart()
 {
     if (stepStartIndex_ != mesh_.time().timeIndex())
@@ -566,13 +496,10 @@ void Foam::fictitiousDomain::rewindToStepStart()
             << ": keepStepStart() must come first in the step"
             << exit(FatalError);
     }
-    if (treatment_ == surfaceTreatment::ghostCells)
-    {
-        deviation_.primitiveFieldRef() = stepStartDeviation_;
-        ghostOwner_.primitiveFieldRef() = stepStartOwner_;
-        deviation_.correctBoundaryConditions();
-        ghostOwner_.correctBoundaryConditions();
-    }
+    deviation_.primitiveFieldRef() = stepStartDeviation_;
+    ghostOwner_.primitiveFieldRef() = stepStartOwner_;
+    deviation_.correctBoundaryConditions();
+    ghostOwner_.correctBoundaryConditions();
 }
 
 
@@ -683,8 +610,8 @@ void Foam::fictitiousDomain::startCandidates
     cand.shifts.setSize(n);
     cand.interior.setSize(n);
     cand.interiorShift.setSize(n);
-    cand.stencils.setSize(n);
-    cand.stencilShifts.setSize(n);
+    cand.near.setSize(n);
+    cand.nearShift.setSize(n);
 }
 
 

@@ -18,8 +18,6 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "fictitiousDomain.H"
-#include "particleGeometry.H"
-#include "smallDenseSolve.H"
 #include "fictitiousDomainParts.H"
 #include "bodyExchange.H"
 
@@ -63,83 +61,30 @@ void Foam::fictitiousDomain::collect
     }
     con.nInterior = cellList.size();
 
-    DynamicList<label> surfacePoint, stencilStart, stencilCell;
-    label nSent = -1;
-    if (treatment_ == surfaceTreatment::ghostCells)
+    // With ghostShear viscous the fluid cells near it (in no body), data
+    // for its fits only (empty with ghostShear link)
+    const labelList& near = cand.near[b];
+    forAll(near, i)
     {
-        // The fluid cells its surface cuts (claimed by it: the closest
-        // surface), forced and written back; then the other fluid cells
-        // near it (in no body), data only
-        const labelList& near = cand.stencils[b][0];
-        forAll(near, i)
+        const label c = near[i];
+        if (owners_.owner(c) < 0 || !owners_.inside(c))
         {
-            const label c = near[i];
-            if (owners_.owner(c) == b && !owners_.inside(c))
-            {
-                localOf(c, cand.stencilShifts[b][0][i]);
-            }
-        }
-        con.nCut = cellList.size() - con.nInterior;
-        nSent = cellList.size();
-        forAll(near, i)
-        {
-            const label c = near[i];
-            if (owners_.owner(c) < 0 || !owners_.inside(c))
-            {
-                localOf(c, cand.stencilShifts[b][0][i]);
-            }
+            localOf(c, cand.nearShift[b][i]);
         }
     }
-    else
-    {
-        forAll(cand.stencils[b], k)
-        {
-            const labelList& st = cand.stencils[b][k];
-            const label start = stencilCell.size();
-            forAll(st, i)
-            {
-                if (owners_.owner(st[i]) == b)
-                {
-                    stencilCell.append
-                    (
-                        localOf(st[i], cand.stencilShifts[b][k][i])
-                    );
-                }
-            }
-            if (stencilCell.size() > start)
-            {
-                surfacePoint.append(k);
-                stencilStart.append(start);
-            }
-        }
-    }
-    stencilStart.append(stencilCell.size());
 
     for (const label c : cellList)
     {
         localIndex[c] = -1;
     }
     con.body = global;
-    if (treatment_ == surfaceTreatment::ghostCells)
+    // A cell's deviation is this body's only if it held the cell
+    con.deviation.setSize(con.nInterior);
+    for (label i = 0; i < con.nInterior; ++i)
     {
-        // A cell's deviation is this body's only if it held the cell
-        con.deviation.setSize(con.nInterior);
-        for (label i = 0; i < con.nInterior; ++i)
-        {
-            const label c = cellList[i];
-            con.deviation[i] =
-                label(ghostOwner_[c]) == global ? deviation_[c] : Zero;
-        }
-    }
-    if (needsFluidRelaxation())
-    {
-        // The cut cells' fluid relaxation (the body's own cells are held
-        // fully, the data cells not at all)
-        con.relaxation.setSize(con.nCut);
-        for (label j = 0; j < con.nCut; ++j)
-        {
-            con.relaxation[j] = fluidRelaxation_[cellList[con.nInterior + j]];
-        }
+        const label c = cellList[i];
+        con.deviation[i] =
+            label(ghostOwner_[c]) == global ? deviation_[c] : Zero;
     }
     con.centres.transfer(centres);
     con.volumes.setSize(cellList.size());
@@ -149,15 +94,9 @@ void Foam::fictitiousDomain::collect
         con.volumes[i] = V[cellList[i]];
         con.u[i] = u[cellList[i]];
     }
-    con.surfacePoint.transfer(surfacePoint);
-    con.stencilStart.transfer(stencilStart);
-    con.stencilCell.transfer(stencilCell);
     cells.transfer(cellList);
-    if (nSent >= 0)
-    {
-        // Only the inside cells get a force back
-        cells.setSize(nSent);
-    }
+    // Only the inside cells get a force back
+    cells.setSize(con.nInterior);
 }
 
 
@@ -184,19 +123,6 @@ Foam::fictitiousDomain::solve
             << "an outer corrector's solve needs keepStepStart() first in"
             << " the step" << exit(FatalError);
     }
-    if
-    (
-        needsFluidRelaxation()
-     && fluidRelaxationIndex_ != mesh_.time().timeIndex()
-    )
-    {
-        FatalErrorInFunction
-            << "ghostCutCells " << cutCellForcingNames[cutCells_]
-            << " needs the fluid step's momentum diagonal of this time step"
-            << " (setFluidRelaxation, time index "
-            << mesh_.time().timeIndex() << "; last set in "
-            << fluidRelaxationIndex_ << ")" << exit(FatalError);
-    }
     vectorField& u = U.primitiveFieldRef();
     const scalarField& a = stepDdtCoeff_;
     if (inOuterLoop)
@@ -214,9 +140,9 @@ Foam::fictitiousDomain::solve
     places_ = bodyPlaces(bodies);
     received_.bodiesListed += bodies.size();
 
-    // Every body's candidate points on this rank, and the cells shared out
+    // Every body's candidate cells on this rank, and the cells shared out
     candidates cand;
-    findCandidates(bodies, cand);
+    findGhostCandidates(bodies, cand);
     const labelList& solverOf = cand.solver;
 
     results_.setSize(bodies.size());
@@ -236,25 +162,19 @@ Foam::fictitiousDomain::solve
         List<DynamicList<contribution>> outgoing(nProcs);
         labelList localIndex(mesh_.nCells(), -1);
         List<vector> released, releasedMoment;
-        if (treatment_ == surfaceTreatment::ghostCells)
-        {
-            releasedDeviations(bodies, released, releasedMoment);
-        }
+        releasedDeviations(bodies, released, releasedMoment);
         forAll(bodies, b)
         {
             contribution con;
             labelList cells;
             const label global = bodyPlaces::global(bodies, b);
             collect(b, global, cand, u, localIndex, con, cells);
-            if (released.size())
-            {
-                con.released = released[b];
-                con.releasedMoment = releasedMoment[b];
-            }
+            con.released = released[b];
+            con.releasedMoment = releasedMoment[b];
             if (pendingMomentum_.found(global))
             {
-                // Momentum the fluid gained outside the step (a penalty,
-                // the wall links), by global index
+                // Momentum the fluid gained outside the step (the wall
+                // links), by global index
                 con.released += pendingMomentum_[global];
                 con.releasedMoment += pendingMoment_[global];
             }
@@ -366,14 +286,13 @@ Foam::fictitiousDomain::solve
         masterMomentum_.clear();
         masterMoment_.clear();
 
-        // Solve, and send each rank the force density of its cells (and,
-        // with ghost cells, their deviation from the rigid motion)
-        const bool ghost = treatment_ == surfaceTreatment::ghostCells;
+        // Solve, and send each rank the force density of its cells and
+        // their deviation from the rigid motion
         List<List<vectorField>> forces(nProcs), deviations(nProcs);
         forAll(incoming, r)
         {
             forces[r].setSize(incoming[r].size());
-            deviations[r].setSize(ghost ? incoming[r].size() : 0);
+            deviations[r].setSize(incoming[r].size());
         }
         forAll(bodies, b)
         {
@@ -384,40 +303,20 @@ Foam::fictitiousDomain::solve
             solved.append(b);
             result& res = results_[b];
             vectorField f, dev;
-            if (ghost)
-            {
-                solveGhostBody
-                (
-                    bodies, b, cand.h[b], partsOf[b], dt, f, dev, res
-                );
-            }
-            else
-            {
-                collocationSet s;
-                assemble(bodies[b], cand.h[b], partsOf[b], s, res);
-                f.setSize(s.u.size(), Zero);
-                if (s.points.size())
-                {
-                    solveBody(b, bodies[b], s, dt, f, res);
-                }
-            }
+            solveGhostBody(bodies, b, cand.h[b], partsOf[b], dt, f, dev, res);
             label start = 0;
             for (const labelPair& rj : whereFrom[b])
             {
                 const contribution& con = incoming[rj.first()][rj.second()];
-                const label size =
-                    ghost ? con.nInterior + con.nCut : con.u.size();
+                const label size = con.nInterior;
                 forces[rj.first()][rj.second()] =
                     SubField<vector>(f, size, start);
-                if (ghost)
+                vectorField& d = deviations[rj.first()][rj.second()];
+                d = SubField<vector>(dev, size, start);
+                if (dev.size() > f.size())
                 {
-                    vectorField& d = deviations[rj.first()][rj.second()];
-                    d = SubField<vector>(dev, size, start);
-                    if (dev.size() > f.size())
-                    {
-                        // ghostShear viscous: the mirrored velocities after
-                        d.append(SubField<vector>(dev, size, f.size() + start));
-                    }
+                    // ghostShear viscous: the mirrored velocities after
+                    d.append(SubField<vector>(dev, size, f.size() + start));
                 }
                 start += size;
             }
@@ -447,8 +346,7 @@ Foam::fictitiousDomain::solve
             {
                 // The owner's bodies in the order it sent them
                 const label b = sentBodies[q][j];
-                // The body's own cells first, then the fluid cells it cut
-                // (fluid: no deviation of the body's)
+                // The body's own cells
                 const label nInside = results_[b].interiorCells.size();
                 results_[b].interiorDeviation =
                     SubField<vector>(backDev[j], nInside);

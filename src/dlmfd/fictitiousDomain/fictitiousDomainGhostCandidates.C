@@ -30,7 +30,7 @@ void Foam::fictitiousDomain::findGhostCandidates
     candidates& cand
 )
 {
-    // (startCandidates has undone the last claims and sized cand)
+    startCandidates(bodies, cand);
     const vectorField& C = mesh_.C();
 
     // Every body's inside cells first, so that the fluid cells of the
@@ -61,8 +61,13 @@ void Foam::fictitiousDomain::findGhostCandidates
         }
     }
 
-    // The cells outside the body within reach of its surface (those inside
-    // another body are left out when collected)
+    // With ghostShear viscous, the cells outside the body within reach of
+    // its surface, which its fits read (those inside another body are left
+    // out when collected); with ghostShear link nothing is fitted
+    if (ghostShear_ != ghostShearModel::viscous)
+    {
+        return;
+    }
     forAll(bodies, b)
     {
         const body& B = bodies[b];
@@ -84,24 +89,11 @@ void Foam::fictitiousDomain::findGhostCandidates
                 {
                     fluid.append(c);
                     fluidShift.append(si);
-                    // A cell the surface cuts (its centre less than half a
-                    // cell out) goes to the closest surface, which forces
-                    // it (ghostCutCells solidFraction or ramp)
-                    if
-                    (
-                        cutCells_ != cutCellForcing::none
-                     && bound < cutCellLimit*h
-                    )
-                    {
-                        owners_.claim(c, b, sqr(bound), false);
-                    }
                 }
             }
         }
-        cand.stencils[b].setSize(1);
-        cand.stencilShifts[b].setSize(1);
-        cand.stencils[b][0].transfer(fluid);
-        cand.stencilShifts[b][0].transfer(fluidShift);
+        cand.near[b].transfer(fluid);
+        cand.nearShift[b].transfer(fluidShift);
     }
 }
 

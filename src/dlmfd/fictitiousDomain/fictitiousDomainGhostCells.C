@@ -15,9 +15,8 @@ Description
 
     The multipliers act on the body's own cells only (the cells whose
     centres lie inside it), as in Glowinski's method where lambda lives on
-    the particle; a fluid cell is forced only where a cut-cell forcing is
-    selected (below), so the gaps between close bodies are not blocked by a
-    constraint force. A cell deeper than one and a half cells below the
+    the particle; no fluid cell is forced, so the gaps between close bodies
+    are not blocked by a constraint force. A cell deeper than one and a half cells below the
     surface moves rigidly. So does a cell within a cell and a half of it (a
     ghost cell) with ghostShear link (the default, Foam::wallLinks): the
     links carry the wall's shear along each grid link the surface cuts,
@@ -48,22 +47,6 @@ Description
     leaves them, so that the ghost velocities change continuously as the
     body moves through the grid. A ghost cell with no fluid cell in reach
     (two bodies in contact) moves rigidly.
-
-    The fluid cells the surface cuts (centres within half a cell of it)
-    are fluid with ghostCutCells none (the default). With solidFraction
-    each is held at the fitted profile u_r + s a_t + b s^2 n for the part
-    of it inside the body, phi = 1/2 - s/h_n (h_n the cell's width along
-    n); with ramp for phi = 1 - 2 s/h. Held means: in a steady state u =
-    phi u_t + (1 - phi) u_f, u_t the target, u_f the velocity the fluid's
-    own equation gives the cell (A_f u_f its neighbours' and the
-    pressure's pull, A_f its momentum diagonal without the ddt part), as a
-    Brinkman term (phi/(1 - phi)) A_f (u_t - u) would. The fluid step
-    carries the last force S, which this step replaces, so in a steady
-    state S = (sigma/(1 - sigma)) (u_t - u)/dt for a step that moves the
-    cell the share sigma of its way to u_t: sigma = phi beta/(phi beta +
-    1 - phi), beta = dt A_f (setFluidRelaxation), gives the Brinkman term
-    whatever dt. Where each forcing stands on the validation table:
-    doc/dictionaries.md, fictitiousDomain.
 
     The fluid's cells get the force density f_c = (u_c - \hat u_c)/dt;
     the body takes the momentum that brings its cells from \hat u_c, less
@@ -97,23 +80,6 @@ Description
 
 #include <algorithm>
 
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
-
-namespace
-{
-
-// The share of its way to the target a cell of solid fraction s is moved
-// in a step whose fluid relaxation is beta (dt A_f, see the description):
-// s beta/(s beta + 1 - s), which makes the steady state s target + (1 -
-// s) u_f whatever dt
-Foam::scalar stepShare(const Foam::scalar s, const Foam::scalar beta)
-{
-    return s >= 1 ? 1 : s*beta/(s*beta + 1 - s);
-}
-
-} // End anonymous namespace
-
-
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::fictitiousDomain::solveGhostBody
@@ -129,13 +95,12 @@ void Foam::fictitiousDomain::solveGhostBody
 ) const
 {
     const body& B = bodies[bi];
-    // The body's cells, the fluid cells its surface cuts and the other
-    // fluid cells around (data), rank after rank; f and dev follow the
-    // order of the first two groups, part after part
-    DynamicList<point> xIn, xCut, xData;
-    DynamicList<scalar> vIn, vCut, betaCut;
-    DynamicList<vector> uIn, devIn, uCut, uData;
-    DynamicList<label> order;    // into In (>= 0) or Cut (-1 - index)
+    // The body's cells and (ghostShear viscous) the fluid cells around
+    // (data), rank after rank; f and dev follow the order of the body's
+    // cells, part after part
+    DynamicList<point> xIn, xData;
+    DynamicList<scalar> vIn;
+    DynamicList<vector> uIn, devIn, uData;
     vector released(Zero), releasedMoment(Zero);
     for (const contribution* c : parts)
     {
@@ -145,22 +110,10 @@ void Foam::fictitiousDomain::solveGhostBody
         {
             if (i < c->nInterior)
             {
-                order.append(xIn.size());
                 xIn.append(c->centres[i]);
                 vIn.append(c->volumes[i]);
                 uIn.append(c->u[i]);
                 devIn.append(c->deviation[i]);
-            }
-            else if (i < c->nInterior + c->nCut)
-            {
-                order.append(-1 - xCut.size());
-                xCut.append(c->centres[i]);
-                vCut.append(c->volumes[i]);
-                uCut.append(c->u[i]);
-                if (c->relaxation.size())
-                {
-                    betaCut.append(c->relaxation[i - c->nInterior]);
-                }
             }
             else
             {
@@ -175,14 +128,13 @@ void Foam::fictitiousDomain::solveGhostBody
     const scalar fitRadius = ghostFitRadius_*h;
     const scalar R2 = sqr(fitRadius);
 
-    // The data and cut cells in bins of a third of the fit radius: a fit
-    // looks at the cells of the bins that the box of its half-ball (the
-    // fluid side of its surface point) meets, a ghost cell's links (1.1
-    // cells) at those of its ball's box, instead of every cell; the cells
-    // kept are sorted, so that the sums run in the order of the cells as
-    // before, bit for bit
+    // The data cells in bins of a third of the fit radius: a fit looks at
+    // the cells of the bins that the box of its half-ball (the fluid side
+    // of its surface point) meets, a ghost cell's links (1.1 cells) at
+    // those of its ball's box, instead of every cell; the cells kept are
+    // sorted, so that the sums run in the order of the cells as before,
+    // bit for bit
     const pointBins dataBins(xData, fitRadius/3);
-    const pointBins cutBins(xCut, fitRadius/3);
     DynamicList<label> near;
 
     // The fit about a surface point p (outward normal n) of the relative
@@ -238,12 +190,11 @@ void Foam::fictitiousDomain::solveGhostBody
         }
         return cells.size() > 0;
     };
-    const auto cross = &rigidMomentumBalance::cross;
 
     // The momentum balance, K y = rhs, y = (V, Omega). The body takes the
     // momentum that brings its cells to its rigid motion from the fluid
     // step's velocities less the deviations the last step gave them (see
-    // the description above), and that of the cut cells it forces
+    // the description above)
     const scalar mvp = B.excessDensity*B.shape->volume();
     const tensor mJ = B.excessDensity*(B.R & B.shape->volumeInertia() & B.R.T());
     rigidMomentumBalance balance
@@ -255,71 +206,8 @@ void Foam::fictitiousDomain::solveGhostBody
         balance.addRigidCell(xIn[c] - X, vIn[c], uIn[c] - devIn[c]);
     }
 
-    // A cut cell, s < h/2 out: u = u_r + s a_t + b s^2 n = P V + Q Omega +
-    // E, affine in the body's velocities (w_k = u_k - V - Omega x r_k)
-    const label nCut = xCut.size();
-    List<tensor> P(nCut, tensor::I), Q(nCut);
-    List<vector> E(nCut, Zero);
-    boolList forced(nCut, false);
-    scalarList share(nCut, scalar(1));
     DynamicList<label> cells;
     DynamicList<scalar> alpha, beta;
-    for (label j = 0; j < nCut; ++j)
-    {
-        const vector rj = xCut[j] - X;
-        Q[j] = -cross(rj);
-        point p;
-        vector n;
-        const scalar sj = -S.depth(xCut[j], p, n);
-        if (!fit(p, n, cells, alpha, beta))
-        {
-            continue;
-        }
-        forced[j] = true;
-        // The share of the cell forced: the part inside the body, 1/2 -
-        // s/h_n, h_n the width of an axis-aligned cell along n
-        // (solidFraction), or 1 - s/(h/2) (ramp)
-        if (cutCells_ == cutCellForcing::solidFraction)
-        {
-            const scalar hn = h*(mag(n.x()) + mag(n.y()) + mag(n.z()));
-            share[j] = stepShare
-            (
-                min(max(0.5 - sj/hn, scalar(0)), scalar(1)), betaCut[j]
-            );
-        }
-        else
-        {
-            share[j] = stepShare
-            (
-                min(max(1 - sj/(cutCellLimit*h), scalar(0)), scalar(1)),
-                betaCut[j]
-            );
-        }
-        const tensor nn(n*n), tt(tensor::I - nn);
-        scalar sa = 0, sb = 0;
-        vector ua(Zero), ub(Zero), ra(Zero), rb(Zero);
-        forAll(cells, i)
-        {
-            const label k = cells[i];
-            const scalar at = alpha[i];
-            sa += at;
-            sb += beta[i];
-            ua += at*uData[k];
-            ub += beta[i]*uData[k];
-            ra += at*(xData[k] - X);
-            rb += beta[i]*(xData[k] - X);
-        }
-        // T_k = sj alpha_k tt + sj^2 beta_k nn; sum T_k, sum T_k u_k,
-        // sum T_k [r_k]x
-        const tensor A = sj*sa*tt + sqr(sj)*sb*nn;
-        E[j] = sj*(tt & ua) + sqr(sj)*(nn & ub);
-        P[j] = tensor::I - A;
-        Q[j] += sj*(tt & cross(ra)) + sqr(sj)*(nn & cross(rb));
-        balance.addAffineCell
-        (
-            rj, share[j]*vCut[j], P[j], Q[j], E[j], uCut[j]
-        );
-    }
 
     // The unknown modes: translations 0-2, rotations 3-5; the others keep
     // their predicted values
@@ -432,7 +320,6 @@ void Foam::fictitiousDomain::solveGhostBody
             }
         };
         addLinks(dataBins, xData);
-        addLinks(cutBins, xCut);
         const scalar wn = linkSum/max(linkWeight, 0.5*h);
         // Tangentially the cell moves rigidly: the fitted profile carried
         // through the wall, -d a_t, enters the viscous fluxes to its fluid
@@ -448,54 +335,30 @@ void Foam::fictitiousDomain::solveGhostBody
     }
 
     // The new velocities, the force density on the fluid and what the body
-    // takes, in the order of the parts
-    // With ghostShear viscous the mirrored velocities follow, in the same
-    // order (zero for the cut cells)
-    f.setSize(order.size());
-    vectorField devOut((viscous ? 2 : 1)*order.size(), Zero);
+    // takes, in the order of the parts. With ghostShear viscous the
+    // mirrored velocities follow, in the same order
+    f.setSize(nIn);
+    vectorField devOut((viscous ? 2 : 1)*nIn, Zero);
     vector momentum(Zero);
-    forAll(order, i)
+    for (label c = 0; c < nIn; ++c)
     {
-        if (order[i] >= 0)
+        const vector r = xIn[c] - X;
+        const vector rigid = rigidAt(xIn[c]);
+        vector uNew = rigid + dev[c];
+        if (twoD_)
         {
-            const label c = order[i];
-            const vector r = xIn[c] - X;
-            const vector rigid = rigidAt(xIn[c]);
-            vector uNew = rigid + dev[c];
-            if (twoD_)
-            {
-                uNew.z() = uIn[c].z();
-            }
-            f[i] = (uNew - uIn[c])/dt;
-            devOut[i] = dev[c];
-            if (viscous)
-            {
-                devOut[order.size() + i] = mirror[c];
-            }
-            const vector lambda = vIn[c]*(rigid - (uIn[c] - devIn[c]))/dt;
-            res.sumLambda += lambda;
-            res.sumMoment += r ^ lambda;
-            momentum += dt*lambda;
+            uNew.z() = uIn[c].z();
         }
-        else
+        f[c] = (uNew - uIn[c])/dt;
+        devOut[c] = dev[c];
+        if (viscous)
         {
-            const label j = -1 - order[i];
-            f[i] = Zero;
-            if (!forced[j])
-            {
-                continue;
-            }
-            vector uNew = (P[j] & Vnew) + (Q[j] & omegaNew) + E[j];
-            if (twoD_)
-            {
-                uNew.z() = uCut[j].z();
-            }
-            f[i] = share[j]*(uNew - uCut[j])/dt;
-            const vector lambda = vCut[j]*f[i];
-            res.sumLambda += lambda;
-            res.sumMoment += (xCut[j] - X) ^ lambda;
-            momentum += dt*lambda;
+            devOut[nIn + c] = mirror[c];
         }
+        const vector lambda = vIn[c]*(rigid - (uIn[c] - devIn[c]))/dt;
+        res.sumLambda += lambda;
+        res.sumMoment += r ^ lambda;
+        momentum += dt*lambda;
     }
     dev.transfer(devOut);
     res.sumLambda += released/dt;
