@@ -324,7 +324,6 @@ Foam::dlmfdCoupling::dlmfdCoupling
         mesh,
         properties_.optionalSubDict("fictitiousDomain")
     ),
-    links_(mesh, fd_.hasWallLinks()),
     ddtCoeff_(1),
     ddtCoeffTimeIndex_(-1),
     Fh_(),
@@ -367,8 +366,7 @@ Foam::dlmfdCoupling::dlmfdCoupling
     }
     knownKeywords::require
     (
-        properties_, fictitiousDomain::keywords(), "fictitiousDomain",
-        propertiesFile
+        properties_, fd_.keywords(), "fictitiousDomain", propertiesFile
     );
 
     // The links' momentum, counted once per step, leaks inside the outer
@@ -377,15 +375,13 @@ Foam::dlmfdCoupling::dlmfdCoupling
     const label nOuter =
         mesh.solutionDict().optionalSubDict("PIMPLE")
        .getOrDefault<label>("nOuterCorrectors", 1);
-    if (fd_.hasWallLinks() && nOuter > 1)
+    const string refusal(fd_.treatment().outerCorrectorsRefusal());
+    if (!refusal.empty() && nOuter > 1)
     {
         FatalErrorInFunction
             << "system/fvSolution PIMPLE/nOuterCorrectors " << nOuter
             << " is not allowed with " << propertiesFile
-            << " fictitiousDomain/ghostShear link (the default); it must be"
-            << " 1, or select ghostShear viscous for the outer loop"
-            << " (the links' momentum account is not made for it)"
-            << exit(FatalError);
+            << " fictitiousDomain/" << refusal.c_str() << exit(FatalError);
     }
 
     // Walls from the mesh's planar patches, where asked for

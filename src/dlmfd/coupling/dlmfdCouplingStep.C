@@ -152,7 +152,7 @@ Foam::scalar Foam::dlmfdCoupling::ddtCoeff(const volVectorField& U)
 }
 
 
-Foam::tmp<Foam::fvVectorMatrix> Foam::dlmfdCoupling::wallLinkMatrix
+Foam::tmp<Foam::fvVectorMatrix> Foam::dlmfdCoupling::surfaceTerms
 (
     const volVectorField& U,
     const volScalarField& nu
@@ -173,8 +173,7 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::dlmfdCoupling::wallLinkMatrix
         bodies[k].V = p.velocity();
         bodies[k].omega = p.omega();
     }
-    links_.update(fd_.ghostOwner(), bodies, fd_.images());
-    tmp<fvVectorMatrix> m = links_.matrix(U, nu);
+    tmp<fvVectorMatrix> m = fd_.treatment().fluidStepTerms(U, nu, bodies, fd_);
     fdSeconds_ += clock.timeIncrement();
     return m;
 }
@@ -275,30 +274,20 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
     }
 
     // (3) Fictitious domain, distributed; its results on the master
-    if (fd_.hasWallLinks())
+    surfaceTreatment& treatment = fd_.treatment();
+    if (treatment.hasFluidGain())
     {
-        // What the fluid gained at the links in its step, the bodies pay
-        // (with what the time scheme's history carries of the last step)
-        List<vector> linkMomentum(bodies.size(), Zero);
-        List<vector> linkMoment(bodies.size(), Zero);
-        if (owned_)
-        {
-            // Among the holders of each body: the master pays the history
-            // of the bodies it holds, the solver of each other body adds
-            // the master's share
-            Map<vector> unpaid, unpaidMoment;
-            links_.payAmongHolders
-            (
-                U, dt, ddtCoeff(U), fd_, solved, linkMomentum, linkMoment,
-                unpaid, unpaidMoment, nParticles_
-            );
-            fd_.setMasterShare(std::move(unpaid), std::move(unpaidMoment));
-        }
-        else
-        {
-            links_.pay(U, dt, ddtCoeff(U), linkMomentum, linkMoment);
-        }
-        fd_.addReleased(bodies, linkMomentum, linkMoment);
+        // What the fluid gained from the bodies in its step (the wall
+        // links), the bodies pay; with owned particles among the holders
+        // of each body
+        List<vector> gain(bodies.size(), Zero);
+        List<vector> gainMoment(bodies.size(), Zero);
+        treatment.fluidGain
+        (
+            U, dt, ddtCoeff(U), fd_, solved, bool(owned_), nParticles_, gain,
+            gainMoment
+        );
+        fd_.addReleased(bodies, gain, gainMoment);
     }
     const scalar commBefore = fd_.communicationSeconds();
     const List<fictitiousDomain::result>& res = fd_.solve(U, solved, dt);
@@ -437,9 +426,9 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
     const granularSystem::statistics s =
         owned_ ? owned_->stats() : granular_.stats();
     Info<< "DLM/FD: " << nParticles_ << " particles, " << nPoints << " points";
-    // Only ghostShear viscous fits the fluid at its ghost cells
+    // Only a treatment that reads the fluid near the surface fits it
     Info<< " (" << nSurface << " ghost cells";
-    if (fd_.hasWallShearSource())
+    if (fd_.treatment().readsFluidNearSurface())
     {
         Info<< ", " << nDropped << " of them with no fluid cell in reach";
     }

@@ -15,34 +15,34 @@ License
 #include "OStringStream.H"
 #include "bodyExchange.H"
 #include "fvmDdt.H"
-#include "linear.H"
 #include "hexCellCheck.H"
-#include "particleGeometry.H"
-#include "Switch.H"
-#include "smallDenseSolve.H"
 #include "fictitiousDomainParts.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
-// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+namespace
+{
 
-const Foam::Enum<Foam::fictitiousDomain::ghostShearModel>
-Foam::fictitiousDomain::ghostShearModelNames
-({
-    {ghostShearModel::viscous, "viscous"},
-    {ghostShearModel::link, "link"},
-});
+// The treatment the dictionary selects, a retired option refused first
+// (with what replaced it, rather than as an unknown model)
+Foam::autoPtr<Foam::surfaceTreatment> selectTreatment
+(
+    const Foam::fvMesh& mesh,
+    const Foam::dictionary& dict
+)
+{
+    Foam::fictitiousDomain::refuseRetired(dict, dict.name());
+    return Foam::surfaceTreatment::New(mesh, dict);
+}
+
+} // End anonymous namespace
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 Foam::scalar Foam::fictitiousDomain::reach() const
 {
-    // The fits' largest radius about a surface point (with ghostShear
-    // link, whose cells move rigidly, the holders' reach and the
-    // clearance across a period keep this margin: the wall links reach
-    // no further)
-    return ghostFitRadius_;
+    return treatment_->reach();
 }
 
 
@@ -66,14 +66,7 @@ Foam::fictitiousDomain::fictitiousDomain
 )
 :
     mesh_(mesh),
-    ghostFitRadius_(dict.getOrDefault<scalar>("ghostFitRadius", 1.5)),
-    ghostShear_
-    (
-        ghostShearModelNames.getOrDefault
-        (
-            "ghostShear", dict, ghostShearModel::link
-        )
-    ),
+    treatment_(selectTreatment(mesh, dict)),
     search_(mesh),
     twoD_(mesh.nSolutionD() == 2),
     images_(search_, mesh.bounds()),
@@ -124,9 +117,10 @@ Foam::fictitiousDomain::fictitiousDomain
             "ghostMirror",
             mesh.time().timeName(),
             mesh,
-            hasWallShearSource()
+            treatment_->mirrorsWallVelocity()
           ? IOobject::READ_IF_PRESENT : IOobject::NO_READ,
-            hasWallShearSource() ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
+            treatment_->mirrorsWallVelocity()
+          ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
         ),
         mesh,
         dimensionedVector(dimVelocity, Zero)
@@ -148,34 +142,9 @@ Foam::fictitiousDomain::fictitiousDomain
     largestRadius_(0),
     holderPartners_()
 {
-    // A keyword of a retired option would be ignored in silence: refused
-    // with what replaced it
-    refuseRetired(dict, dict.name());
-
     // Before anything is solved or written: a mesh the coupling is not
     // validated on stops here, not by diverging later
     hexCellCheck::require(mesh, "DLM/FD");
-    if (!(ghostFitRadius_ >= 1.5))
-    {
-        FatalIOErrorInFunction(dict)
-            << "ghostFitRadius = " << ghostFitRadius_ << " is not"
-            << " allowed; it must be >= 1.5 (in cell sizes)"
-            << exit(FatalIOError);
-    }
-    // The default ghost cells move rigidly: nothing is fitted, so a fit
-    // radius would be ignored
-    if
-    (
-        ghostShear_ == ghostShearModel::link
-     && dict.found("ghostFitRadius", keyType::LITERAL)
-    )
-    {
-        FatalIOErrorInFunction(dict)
-            << "fictitiousDomain/ghostFitRadius is read with ghostShear"
-            << " viscous only; this dictionary selects ghostShear link,"
-            << " which fits nothing. Remove the entry or select ghostShear"
-            << " viscous" << exit(FatalIOError);
-    }
     if (twoD_ && mesh.geometricD()[2] > 0)
     {
         FatalErrorInFunction
@@ -188,9 +157,11 @@ Foam::fictitiousDomain::fictitiousDomain
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::wordList Foam::fictitiousDomain::keywords()
+Foam::wordList Foam::fictitiousDomain::keywords() const
 {
-    return wordList({"surfaceTreatment", "ghostShear", "ghostFitRadius"});
+    wordList known({"surfaceTreatment"});
+    known.append(treatment_->keywords());
+    return known;
 }
 
 
@@ -284,14 +255,7 @@ void Foam::fictitiousDomain::refuseRetired
 
 Foam::string Foam::fictitiousDomain::describe() const
 {
-    OStringStream os;
-    os  << "surfaceTreatment ghostCells, ghostShear "
-        << ghostShearModelNames[ghostShear_];
-    if (ghostShear_ == ghostShearModel::viscous)
-    {
-        os  << ", ghostFitRadius " << ghostFitRadius_;
-    }
-    return os.str();
+    return treatment_->describe();
 }
 
 
@@ -312,91 +276,6 @@ void Foam::fictitiousDomain::discardStoredState(const fileName& particleFile)
     deviation_ == dimensionedVector(deviation_.dimensions(), Zero);
     ghostOwner_ == dimensionedScalar("none", dimless, -1);
     mirror_ == dimensionedVector(mirror_.dimensions(), Zero);
-}
-
-
-Foam::tmp<Foam::volVectorField> Foam::fictitiousDomain::wallShearSource
-(
-    const volScalarField& nu
-) const
-{
-    tmp<volVectorField> tsrc
-    (
-        new volVectorField
-        (
-            IOobject("wallShearSource", mesh_.time().timeName(), mesh_),
-            mesh_,
-            dimensionedVector(dimAcceleration, Zero)
-        )
-    );
-    vectorField& src = tsrc.ref().primitiveFieldRef();
-    const scalarField& V = mesh_.V();
-    const surfaceScalarField nuf(linearInterpolate(nu));
-    const surfaceScalarField& dc = mesh_.deltaCoeffs();
-    const surfaceScalarField& magSf = mesh_.magSf();
-    const labelUList& own = mesh_.owner();
-    const labelUList& nei = mesh_.neighbour();
-    const scalarField& body = ghostOwner_.primitiveField();
-    const vectorField& t = mirror_.primitiveField();
-
-    // A face between a body's cell g (t_g) and a fluid cell c: the flux
-    // nu |S_f| t_g/|d_f| into c, out of g
-    forAll(nei, f)
-    {
-        const label o = own[f], n = nei[f];
-        const bool oBody = body[o] >= 0, nBody = body[n] >= 0;
-        if (oBody == nBody)
-        {
-            continue;
-        }
-        const label g = oBody ? o : n, c = oBody ? n : o;
-        const vector F = nuf[f]*magSf[f]*dc[f]*t[g];
-        src[c] += F/V[c];
-        src[g] -= F/V[g];
-    }
-
-    // Across processor and periodic patches each side takes its own cell's
-    // share, with the neighbour's values of the other side
-    forAll(mesh_.boundary(), patchi)
-    {
-        const fvPatch& p = mesh_.boundary()[patchi];
-        if (!p.coupled())
-        {
-            continue;
-        }
-        const labelUList& fc = p.faceCells();
-        const scalarField bodyNbr
-        (
-            ghostOwner_.boundaryField()[patchi].patchNeighbourField()
-        );
-        const vectorField tNbr
-        (
-            mirror_.boundaryField()[patchi].patchNeighbourField()
-        );
-        const scalarField& nup = nuf.boundaryField()[patchi];
-        const scalarField& dcp = dc.boundaryField()[patchi];
-        const scalarField& magSp = magSf.boundaryField()[patchi];
-        forAll(fc, i)
-        {
-            const label l = fc[i];
-            const bool lBody = body[l] >= 0, nBody = bodyNbr[i] >= 0;
-            if (lBody == nBody)
-            {
-                continue;
-            }
-            const scalar coeff = nup[i]*magSp[i]*dcp[i]/V[l];
-            if (lBody)
-            {
-                src[l] -= coeff*t[l];
-            }
-            else
-            {
-                src[l] += coeff*tNbr[i];
-            }
-        }
-    }
-    tsrc.ref().correctBoundaryConditions();
-    return tsrc;
 }
 
 

@@ -61,8 +61,8 @@ void Foam::fictitiousDomain::collect
     }
     con.nInterior = cellList.size();
 
-    // With ghostShear viscous the fluid cells near it (in no body), data
-    // for its fits only (empty with ghostShear link)
+    // The fluid cells near it (in no body) that its treatment reads
+    // (readsFluidNearSurface; none otherwise), data only
     const labelList& near = cand.near[b];
     forAll(near, i)
     {
@@ -303,7 +303,7 @@ Foam::fictitiousDomain::solve
             solved.append(b);
             result& res = results_[b];
             vectorField f, dev;
-            solveGhostBody(bodies, b, cand.h[b], partsOf[b], dt, f, dev, res);
+            treatment_->solveBody(bodies[b], cand.h[b], partsOf[b], dt, f, dev, res);
             label start = 0;
             for (const labelPair& rj : whereFrom[b])
             {
@@ -315,7 +315,7 @@ Foam::fictitiousDomain::solve
                 d = SubField<vector>(dev, size, start);
                 if (dev.size() > f.size())
                 {
-                    // ghostShear viscous: the mirrored velocities after
+                    // A treatment that mirrors the wall velocity: those after
                     d.append(SubField<vector>(dev, size, f.size() + start));
                 }
                 start += size;

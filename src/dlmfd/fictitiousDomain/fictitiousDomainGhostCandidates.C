@@ -61,10 +61,10 @@ void Foam::fictitiousDomain::findGhostCandidates
         }
     }
 
-    // With ghostShear viscous, the cells outside the body within reach of
-    // its surface, which its fits read (those inside another body are left
-    // out when collected); with ghostShear link nothing is fitted
-    if (ghostShear_ != ghostShearModel::viscous)
+    // Where the treatment reads them, the cells outside the body within
+    // reach of its surface (those inside another body are left out when
+    // collected)
+    if (!treatment_->readsFluidNearSurface())
     {
         return;
     }

@@ -36,10 +36,10 @@ Foam::scalar Foam::fictitiousDomain::holderReach
 
 Foam::scalar Foam::fictitiousDomain::holderCells() const
 {
-    // With wall links, a fluid cell two faces from a body's cell may link
-    // through the body to its neighbour beyond (Foam::wallLinks): the rank
-    // of a cell three faces out needs the body
-    return hasWallLinks() ? max(reach(), scalar(3)) : reach();
+    // The treatment's (with wall links, a fluid cell two faces from a
+    // body's cell may link through the body to its neighbour beyond: the
+    // rank of a cell three faces out needs the body)
+    return treatment_->holderCells();
 }
 
 

@@ -10,91 +10,34 @@ License
     option) any later version. See <http://www.gnu.org/licenses/>.
 
 Description
-    The ghost-cell surface treatment of Foam::fictitiousDomain
-    (surfaceTreatment ghostCells).
-
-    The multipliers act on the body's own cells only (the cells whose
-    centres lie inside it), as in Glowinski's method where lambda lives on
-    the particle; no fluid cell is forced, so the gaps between close bodies
-    are not blocked by a constraint force. A cell deeper than one and a half cells below the
-    surface moves rigidly. So does a cell within a cell and a half of it (a
-    ghost cell) with ghostShear link (the default, Foam::wallLinks): the
-    links carry the wall's shear along each grid link the surface cuts,
-    and a normal deviation, which the fluid would meet only through
-    convection and the mass flux (no viscous term to damp it), fed back on
-    the fluid's normal velocity it was fitted from (a face-on cube at Re
-    100, D/dx 12, never settled with it: benchmarks/fixedBodyDrag).
-
-    With ghostShear viscous a ghost cell (depth d below its nearest surface
-    point p, outward normal n there) takes the rigid motion u_r plus a
-    normal deviation that makes the flux through the faces it shares with
-    its fluid neighbours that of the wall; from one to one and a half
-    cells deep the deviation fades to zero.
-
-    With w = u - u_r the fluid's velocity relative to the body, fitted
-    about p over the fluid cells within R = ghostFitRadius cells (s = n.(x
-    - p) > 0, weights kappa = (1 - r^2/R^2)^2): at a no-slip wall w
-    vanishes with its tangential derivatives, so its tangential part grows
-    as s a_t and, by continuity, its normal part as b s^2. Along n the
-    deviation is what makes the flux through the faces shared with the
-    fluid neighbours that of the wall (zero where the face lies inside the
-    body). Tangentially a ghost cell moves rigidly; the wall's shear
-    reaches its fluid neighbours through the viscous flux of each face
-    between them, the fitted profile carried through the wall, -d a_t, in
-    that face's viscous flux (wallShearSource, in the next fluid step: the
-    fluid cell gains what the ghost cell, and through its balance the
-    body, loses). Every weight and the fade vanish where a cell enters or
-    leaves them, so that the ghost velocities change continuously as the
-    body moves through the grid. A ghost cell with no fluid cell in reach
-    (two bodies in contact) moves rigidly.
-
-    The fluid's cells get the force density f_c = (u_c - \hat u_c)/dt;
-    the body takes the momentum that brings its cells from \hat u_c, less
-    the deviation delta_c the last step gave them, to its rigid motion:
-
-    \f[
-        (m - 1) v_p (V - V^*) = - \sum_c V_c (u_r(x_c) - \hat u_c + \delta_c),
-        \quad
-        (m - 1) J (\Omega - \Omega^*)
-      = - \sum_c V_c\, r_c \times (u_r(x_c) - \hat u_c + \delta_c)
-    \f]
-
-    a 6x6 linear system (about m v_p and m J on the diagonal, positive
-    definite for every m > 0): the step is direct, with no iteration. The
-    deviations are the fluid's extension through the wall, not momentum of
-    the body: in a steady state they cancel, and a cell entering or leaving
-    the ghost layer as the body moves through the grid does not kick the
-    body. A cell that leaves the body leaves its deviation, about zero as
-    its centre crosses the surface, in the fluid, and the body pays for it
-    (contribution::released), so that the fluid's momentum less the
-    deviations' sum (field ghostDeviation), plus the bodies', is kept
-    exactly.
+    One body's constraint with the ghost cells (Foam::surfaceTreatments::
+    ghostCells, whose header gives the equations): its momentum balance
+    over its cells, its new velocities, and with ghostShear viscous the
+    normal deviation and the mirrored wall velocity of its outer cells
+    from the fit of the fluid near its surface.
 
 \*---------------------------------------------------------------------------*/
 
-#include "fictitiousDomain.H"
+#include "ghostCells.H"
 #include "pointBins.H"
 #include "posedShape.H"
 #include "rigidMomentumBalance.H"
-#include "fictitiousDomainParts.H"
 
 #include <algorithm>
 
-// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::fictitiousDomain::solveGhostBody
+void Foam::surfaceTreatments::ghostCells::solveBody
 (
-    const UList<body>& bodies,
-    const label bi,
+    const fictitiousDomainBody& B,
     const scalar h,
-    const UList<const contribution*>& parts,
+    const UList<const fictitiousDomainContribution*>& parts,
     const scalar dt,
     vectorField& f,
     vectorField& dev,
-    result& res
+    fictitiousDomainResult& res
 ) const
 {
-    const body& B = bodies[bi];
     // The body's cells and (ghostShear viscous) the fluid cells around
     // (data), rank after rank; f and dev follow the order of the body's
     // cells, part after part
@@ -102,7 +45,7 @@ void Foam::fictitiousDomain::solveGhostBody
     DynamicList<scalar> vIn;
     DynamicList<vector> uIn, devIn, uData;
     vector released(Zero), releasedMoment(Zero);
-    for (const contribution* c : parts)
+    for (const fictitiousDomainContribution* c : parts)
     {
         released += c->released;
         releasedMoment += c->releasedMoment;
@@ -125,7 +68,7 @@ void Foam::fictitiousDomain::solveGhostBody
     const label nIn = xIn.size();
     const point& X = B.centre;
     const posedShape S(*B.shape, X, B.R);
-    const scalar fitRadius = ghostFitRadius_*h;
+    const scalar fitRadius = fitRadius_*h;
     const scalar R2 = sqr(fitRadius);
 
     // The data cells in bins of a third of the fit radius: a fit looks at
@@ -251,7 +194,7 @@ void Foam::fictitiousDomain::solveGhostBody
     dev.setSize(nIn);
     dev = Zero;
     // The mirrored profile, for the viscous fluxes only
-    const bool viscous = ghostShear_ == ghostShearModel::viscous;
+    const bool viscous = shear_ == shearModel::viscous;
     vectorField mirror(viscous ? nIn : 0, Zero);
     label nGhost = 0, nAlone = 0;
     const scalar link2 = sqr(1.1*h);
