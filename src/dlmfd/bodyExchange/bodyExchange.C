@@ -23,8 +23,8 @@ Ostream& operator<<(Ostream& os, const fictitiousDomain::contribution& c)
 {
     os  << c.body << token::SPACE << c.centres << token::SPACE << c.volumes
         << token::SPACE << c.u << token::SPACE << c.nInterior
-        << token::SPACE << c.deviation << token::SPACE << c.released
-        << token::SPACE << c.releasedMoment;
+        << token::SPACE << c.deviation << token::SPACE << c.owed
+        << token::SPACE << c.owedMoment;
     return os;
 }
 
@@ -32,7 +32,7 @@ Ostream& operator<<(Ostream& os, const fictitiousDomain::contribution& c)
 Istream& operator>>(Istream& is, fictitiousDomain::contribution& c)
 {
     is  >> c.body >> c.centres >> c.volumes >> c.u >> c.nInterior
-        >> c.deviation >> c.released >> c.releasedMoment;
+        >> c.deviation >> c.owed >> c.owedMoment;
     return is;
 }
 

@@ -287,7 +287,7 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
             U, dt, ddtCoeff(U), fd_, solved, bool(owned_), nParticles_, gain,
             gainMoment
         );
-        fd_.addReleased(bodies, gain, gainMoment);
+        fd_.addOwed(bodies, gain, gainMoment);
     }
     const scalar commBefore = fd_.communicationSeconds();
     const List<fictitiousDomain::result>& res = fd_.solve(U, solved, dt);

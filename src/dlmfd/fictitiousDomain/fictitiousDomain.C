@@ -340,7 +340,7 @@ void Foam::fictitiousDomain::keepStepStart(const volVectorField& U)
 }
 
 
-void Foam::fictitiousDomain::addReleased
+void Foam::fictitiousDomain::addOwed
 (
     const UList<body>& bodies,
     const UList<vector>& momentum,
@@ -358,10 +358,10 @@ void Foam::fictitiousDomain::addReleased
     {
         // (from zero: 0 + x is x)
         const label g = bodyPlaces::global(bodies, b);
-        pendingMomentum_.insert(g, Zero);
-        pendingMoment_.insert(g, Zero);
-        pendingMomentum_[g] += momentum[b];
-        pendingMoment_[g] += moment[b];
+        owedMomentum_.insert(g, Zero);
+        owedMoment_.insert(g, Zero);
+        owedMomentum_[g] += momentum[b];
+        owedMoment_[g] += moment[b];
     }
 }
 

@@ -161,24 +161,24 @@ Foam::fictitiousDomain::solve
         List<DynamicList<label>> bodiesTo(nProcs);
         List<DynamicList<contribution>> outgoing(nProcs);
         labelList localIndex(mesh_.nCells(), -1);
-        List<vector> released, releasedMoment;
-        releasedDeviations(bodies, released, releasedMoment);
+        List<vector> owed, owedMoment;
+        owedForCellsLeft(bodies, owed, owedMoment);
         forAll(bodies, b)
         {
             contribution con;
             labelList cells;
             const label global = bodyPlaces::global(bodies, b);
             collect(b, global, cand, u, localIndex, con, cells);
-            con.released = released[b];
-            con.releasedMoment = releasedMoment[b];
-            if (pendingMomentum_.found(global))
+            con.owed = owed[b];
+            con.owedMoment = owedMoment[b];
+            if (owedMomentum_.found(global))
             {
                 // Momentum the fluid gained outside the step (the wall
                 // links), by global index
-                con.released += pendingMomentum_[global];
-                con.releasedMoment += pendingMoment_[global];
+                con.owed += owedMomentum_[global];
+                con.owedMoment += owedMoment_[global];
             }
-            if (con.centres.empty() && con.released == vector::zero)
+            if (con.centres.empty() && con.owed == vector::zero)
             {
                 continue;
             }
@@ -196,29 +196,29 @@ Foam::fictitiousDomain::solve
         {
             // Momentum given to a body this rank does not hold would be
             // lost
-            forAllConstIters(pendingMomentum_, iter)
+            forAllConstIters(owedMomentum_, iter)
             {
                 const label g = iter.key();
                 if
                 (
                     places_(g) < 0
                  && (
-                        pendingMomentum_[g] != vector::zero
-                     || pendingMoment_[g] != vector::zero
+                        owedMomentum_[g] != vector::zero
+                     || owedMoment_[g] != vector::zero
                     )
                 )
                 {
                     FatalErrorInFunction
                         << "the fluid of rank " << me << " gave particle "
-                        << g << " momentum " << pendingMomentum_[g]
+                        << g << " momentum " << owedMomentum_[g]
                         << " outside the step, but the rank does not hold"
                         << " it: its list of bodies must hold every body"
                         << " near its cells (holds())" << exit(FatalError);
                 }
             }
         }
-        pendingMomentum_.clear();
-        pendingMoment_.clear();
+        owedMomentum_.clear();
+        owedMoment_.clear();
         // The deviations of the last step are in the contributions now;
         // this step sets those of the cells inside a body
         deviation_.primitiveFieldRef() = Zero;
@@ -260,7 +260,7 @@ Foam::fictitiousDomain::solve
         // hold comes first, as the master's part did with every body on
         // every rank (sent when its momentum was not zero)
         List<contribution> masterParts(bodies.size());
-        if (perRank_ && masterMomentum_.size())
+        if (perRank_ && masterOwedMomentum_.size())
         {
             forAll(bodies, b)
             {
@@ -269,22 +269,22 @@ Foam::fictitiousDomain::solve
                 (
                     solverOf[b] == me
                  && !cand.masterHolds[b]
-                 && masterMomentum_.found(g)
-                 && masterMomentum_[g] != vector::zero
+                 && masterOwedMomentum_.found(g)
+                 && masterOwedMomentum_[g] != vector::zero
                 )
                 {
                     contribution& con = masterParts[b];
                     con.body = g;
-                    con.released = masterMomentum_[g];
-                    con.releasedMoment = masterMoment_[g];
+                    con.owed = masterOwedMomentum_[g];
+                    con.owedMoment = masterOwedMoment_[g];
                     DynamicList<const contribution*> parts(1, &con);
                     parts.append(partsOf[b]);
                     partsOf[b].transfer(parts);
                 }
             }
         }
-        masterMomentum_.clear();
-        masterMoment_.clear();
+        masterOwedMomentum_.clear();
+        masterOwedMoment_.clear();
 
         // Solve, and send each rank the force density of its cells and
         // their deviation from the rigid motion

@@ -98,16 +98,16 @@ void Foam::fictitiousDomain::findGhostCandidates
 }
 
 
-void Foam::fictitiousDomain::releasedDeviations
+void Foam::fictitiousDomain::owedForCellsLeft
 (
     const UList<body>& bodies,
-    List<vector>& released,
+    List<vector>& owed,
     List<vector>& moment
 ) const
 {
-    released.setSize(bodies.size());
+    owed.setSize(bodies.size());
     moment.setSize(bodies.size());
-    released = Zero;
+    owed = Zero;
     moment = Zero;
     const vectorField& C = mesh_.C();
     const scalarField& V = mesh_.V();
@@ -137,7 +137,7 @@ void Foam::fictitiousDomain::releasedDeviations
         const vector arm =
             images_.nearest(C[c] - bodies[o].centre);
         const vector p = V[c]*deviation_[c];
-        released[o] += p;
+        owed[o] += p;
         moment[o] += arm ^ p;
     }
 }

@@ -29,7 +29,7 @@ Foam::scalar Foam::fictitiousDomain::holderReach
     // it (with h, the mean size of its cells, at most the largest), and
     // its wall links within three faces of its cells; the cells it held at
     // the last step, a step's travel back, within one more cell (a body
-    // moving farther is refused in releasedDeviations)
+    // moving farther is refused in owedForCellsLeft)
     return shape.boundingRadius() + (holderCells() + 1)*largestCellSize_;
 }
 
@@ -449,14 +449,14 @@ bool Foam::fictitiousDomain::rankHolds(const label r, const body& B) const
 }
 
 
-void Foam::fictitiousDomain::setMasterShare
+void Foam::fictitiousDomain::setMasterOwed
 (
     Map<vector>&& momentum,
     Map<vector>&& moment
 )
 {
-    masterMomentum_.transfer(momentum);
-    masterMoment_.transfer(moment);
+    masterOwedMomentum_.transfer(momentum);
+    masterOwedMoment_.transfer(moment);
 }
 
 

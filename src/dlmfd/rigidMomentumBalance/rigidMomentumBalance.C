@@ -22,16 +22,16 @@ Foam::rigidMomentumBalance::rigidMomentumBalance
     const tensor& mJ,
     const vector& Vstar,
     const vector& omegaStar,
-    const vector& released,
-    const vector& releasedMoment
+    const vector& owed,
+    const vector& owedMoment
 )
 :
     KVV_(mvp*tensor::I),
     KVO_(Zero),
     KOV_(Zero),
     KOO_(mJ),
-    rhsV_(mvp*Vstar - released),
-    rhsO_((mJ & omegaStar) - releasedMoment)
+    rhsV_(mvp*Vstar - owed),
+    rhsO_((mJ & omegaStar) - owedMoment)
 {}
 
 

@@ -147,8 +147,8 @@ void Foam::wallLinks::payAmongHolders
     const UList<body>& held,
     List<vector>& momentum,
     List<vector>& moment,
-    Map<vector>& unpaidMomentum,
-    Map<vector>& unpaidMoment,
+    Map<vector>& masterOwedMomentum,
+    Map<vector>& masterOwedMoment,
     const label nScene
 )
 {
@@ -205,11 +205,11 @@ void Foam::wallLinks::payAmongHolders
     }
 
     // Each rank pays its own share; the master (c - 1)/c of the history of
-    // the bodies it holds; of each other, that share is left unpaid (the
+    // the bodies it holds; of each other, that share is left masterOwed (the
     // solver adds it as the master's part: 0 + x is x)
     const scalar carried = (ddtCoeff - 1)/ddtCoeff;
-    unpaidMomentum.clear();
-    unpaidMoment.clear();
+    masterOwedMomentum.clear();
+    masterOwedMoment.clear();
     const label index = U.mesh().time().timeIndex();
     const List<labelList>& holders = fd.holdersOf(held);
     for (label k = 0; k < n; ++k)
@@ -246,8 +246,8 @@ void Foam::wallLinks::payAmongHolders
         }
         else
         {
-            unpaidMomentum.set(g, carried*H);
-            unpaidMoment.set(g, carried*HMoment);
+            masterOwedMomentum.set(g, carried*H);
+            masterOwedMoment.set(g, carried*HMoment);
         }
         historyMomentum_[g] = sum + carried*H;
         historyMoment_[g] = sumMoment + carried*HMoment;

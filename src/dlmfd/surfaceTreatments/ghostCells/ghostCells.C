@@ -252,13 +252,13 @@ void Foam::surfaceTreatments::ghostCells::fluidGain
         // Among the holders of each body: the master pays the history of
         // the bodies it holds, the solver of each other body adds the
         // master's share
-        Map<vector> unpaid, unpaidMoment;
+        Map<vector> masterOwed, masterOwedMoment;
         links_.payAmongHolders
         (
-            U, dt, ddtCoeff, fd, bodies, momentum, moment, unpaid,
-            unpaidMoment, nScene
+            U, dt, ddtCoeff, fd, bodies, momentum, moment, masterOwed,
+            masterOwedMoment, nScene
         );
-        fd.setMasterShare(std::move(unpaid), std::move(unpaidMoment));
+        fd.setMasterOwed(std::move(masterOwed), std::move(masterOwedMoment));
     }
     else
     {

@@ -44,11 +44,11 @@ void Foam::surfaceTreatments::ghostCells::solveBody
     DynamicList<point> xIn, xData;
     DynamicList<scalar> vIn;
     DynamicList<vector> uIn, devIn, uData;
-    vector released(Zero), releasedMoment(Zero);
+    vector owed(Zero), owedMoment(Zero);
     for (const fictitiousDomainContribution* c : parts)
     {
-        released += c->released;
-        releasedMoment += c->releasedMoment;
+        owed += c->owed;
+        owedMoment += c->owedMoment;
         forAll(c->centres, i)
         {
             if (i < c->nInterior)
@@ -142,7 +142,7 @@ void Foam::surfaceTreatments::ghostCells::solveBody
     const tensor mJ = B.excessDensity*(B.R & B.shape->volumeInertia() & B.R.T());
     rigidMomentumBalance balance
     (
-        mvp, mJ, B.V, B.omega, released, releasedMoment
+        mvp, mJ, B.V, B.omega, owed, owedMoment
     );
     for (label c = 0; c < nIn; ++c)
     {
@@ -304,9 +304,9 @@ void Foam::surfaceTreatments::ghostCells::solveBody
         momentum += dt*lambda;
     }
     dev.transfer(devOut);
-    res.sumLambda += released/dt;
-    res.sumMoment += releasedMoment/dt;
-    momentum += released;
+    res.sumLambda += owed/dt;
+    res.sumMoment += owedMoment/dt;
+    momentum += owed;
     res.nInterior = nIn - nGhost;
     res.nSurface = nGhost;
     res.nSurfaceDropped = nAlone;
