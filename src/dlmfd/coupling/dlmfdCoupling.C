@@ -270,11 +270,11 @@ void Foam::dlmfdCoupling::broadcastState()
         }
     }
     Pstream::scatter(state);
-    ++nStateSteps_;
+    ++costs_.nStateSteps;
     if (!Pstream::master())
     {
-        stateMessages_ += 1;
-        stateBytes_ += state.byteSize();
+        costs_.stateMessages += 1;
+        costs_.stateBytes += state.byteSize();
         for (label i = 0; i < n; ++i)
         {
             rigidParticle& p = granular_.particle(i);
@@ -324,24 +324,14 @@ Foam::dlmfdCoupling::dlmfdCoupling
         mesh,
         properties_.optionalSubDict("fictitiousDomain")
     ),
-    ddtCoeff_(1),
-    ddtCoeffTimeIndex_(-1),
+    ddt_(),
     Fh_(),
     Th_(),
     series_(),
     seriesInterval_(properties_.getOrDefault<label>("seriesInterval", 1)),
     vtk_(mesh.time().globalPath()/"VTK", mesh.time().value()),
-    fdSeconds_(0),
-    stateMessages_(0),
-    stateBytes_(0),
-    nStateSteps_(0),
-    mirrorParticles_(0),
-    commSeconds_(0),
-    granularSeconds_(0),
-    seriesSeconds_(0),
-    correctedIndex_(-1),
-    nCorrections_(0),
-    lastV_()
+    costs_(),
+    outer_()
 {
     // A misspelt optional keyword would leave its default in force (the
     // file of the case's constant/ folder: in parallel the dictionary is
@@ -581,12 +571,12 @@ void Foam::dlmfdCoupling::reportExchange() const
     line("messages received    ", t.messages, nSolves);
     line("bytes received       ", t.bytes, nSolves);
     // The states after the granular step: per step, not per solve
-    const scalar nSteps = max(nStateSteps_, label(1));
-    line("state messages per step", stateMessages_, nSteps);
-    line("state bytes per step ", stateBytes_, nSteps);
+    const scalar nSteps = max(costs_.nStateSteps, label(1));
+    line("state messages per step", costs_.stateMessages, nSteps);
+    line("state bytes per step ", costs_.stateBytes, nSteps);
     if (owned_)
     {
-        line("particles held per step", mirrorParticles_, nSteps);
+        line("particles held per step", costs_.mirrorParticles, nSteps);
     }
     Info<< endl;
 }

@@ -335,10 +335,10 @@ void Foam::dlmfdCoupling::sendStates
         const Pair<scalar> received =
             owned_->sendStates(sendTo, everyone, mirror);
         setMirror(mirror);
-        mirrorParticles_ += granular_.size();
-        stateMessages_ += received.first();
-        stateBytes_ += received.second();
-        ++nStateSteps_;
+        costs_.mirrorParticles += granular_.size();
+        costs_.stateMessages += received.first();
+        costs_.stateBytes += received.second();
+        ++costs_.nStateSteps;
         return;
     }
     scalar farthest = 0;
@@ -385,10 +385,10 @@ void Foam::dlmfdCoupling::sendStates
     const Pair<scalar> received =
         owned_->sendStates(sendTo, partners, mirror);
     setMirror(mirror);
-    mirrorParticles_ += granular_.size();
-    stateMessages_ += received.first();
-    stateBytes_ += received.second();
-    ++nStateSteps_;
+    costs_.mirrorParticles += granular_.size();
+    costs_.stateMessages += received.first();
+    costs_.stateBytes += received.second();
+    ++costs_.nStateSteps;
 }
 
 

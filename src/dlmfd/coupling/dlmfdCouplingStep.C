@@ -141,14 +141,14 @@ Foam::scalar Foam::dlmfdCoupling::ddtCoeff(const volVectorField& U)
     // dt times the time scheme's diagonal per volume, averaged (a matrix
     // assembled for it: once per time step)
     const label timeIndex = mesh_.time().timeIndex();
-    if (ddtCoeffTimeIndex_ != timeIndex)
+    if (ddt_.timeIndex != timeIndex)
     {
-        ddtCoeff_ =
+        ddt_.coeff =
             mesh_.time().deltaTValue()
            *gAverage(fvm::ddt(U)().A()().primitiveField());
-        ddtCoeffTimeIndex_ = timeIndex;
+        ddt_.timeIndex = timeIndex;
     }
-    return ddtCoeff_;
+    return ddt_.coeff;
 }
 
 
@@ -174,7 +174,7 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::dlmfdCoupling::surfaceTerms
         bodies[k].omega = p.omega();
     }
     tmp<fvVectorMatrix> m = fd_.treatment().fluidStepTerms(U, nu, bodies, fd_);
-    fdSeconds_ += clock.timeIncrement();
+    costs_.fdSeconds += clock.timeIncrement();
     return m;
 }
 
@@ -199,28 +199,28 @@ void Foam::dlmfdCoupling::correct(volVectorField& U)
     const UList<fictitiousDomain::body>& solved = bodiesHeld(bodies, held);
 
     const label index = mesh_.time().timeIndex();
-    if (correctedIndex_ != index)
+    if (outer_.correctedIndex != index)
     {
         fd_.keepStepStart(U);
-        correctedIndex_ = index;
-        nCorrections_ = 0;
+        outer_.correctedIndex = index;
+        outer_.nCorrections = 0;
     }
     else
     {
         fd_.rewindToStepStart();
     }
-    ++nCorrections_;
+    ++outer_.nCorrections;
     const scalar dt = mesh_.time().deltaTValue();
     const scalar commBefore = fd_.communicationSeconds();
     const List<fictitiousDomain::result>& res = fd_.solve(U, solved, dt, true);
     const scalar fdComm = fd_.communicationSeconds() - commBefore;
-    commSeconds_ += fdComm;
+    costs_.commSeconds += fdComm;
 
     // How far the particles' velocities moved since the last corrector:
     // what the outer loop has left to converge (on the rank that takes
     // each body's result)
     scalar change = 0;
-    lastV_.setSize(granular_.size(), vector::max);
+    outer_.lastV.setSize(granular_.size(), vector::max);
     const bodyPlaces places(bodies);
     forAll(res, k)
     {
@@ -230,19 +230,19 @@ void Foam::dlmfdCoupling::correct(volVectorField& U)
         }
         const label place = places(bodyPlaces::global(solved, k));
         const vector V = solved[k].V + res[k].dV;
-        if (nCorrections_ > 1)
+        if (outer_.nCorrections > 1)
         {
-            change = max(change, mag(V - lastV_[place]));
+            change = max(change, mag(V - outer_.lastV[place]));
         }
-        lastV_[place] = V;
+        outer_.lastV[place] = V;
     }
     if (owned_)
     {
         reduce(change, maxOp<scalar>());
     }
 
-    Info<< "DLM/FD outer corrector " << nCorrections_ << ": ";
-    if (nCorrections_ > 1)
+    Info<< "DLM/FD outer corrector " << outer_.nCorrections << ": ";
+    if (outer_.nCorrections > 1)
     {
         Info<< "largest change of a particle velocity " << change << " m/s";
     }
@@ -251,7 +251,7 @@ void Foam::dlmfdCoupling::correct(volVectorField& U)
         Info<< "particles constrained";
     }
     Info<< endl;
-    fdSeconds_ += clock.timeIncrement() - fdComm;
+    costs_.fdSeconds += clock.timeIncrement() - fdComm;
 }
 
 
@@ -267,7 +267,7 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
     const List<fictitiousDomain::body> bodies(predictedBodies(V0, omega0));
     List<fictitiousDomain::body> held;
     const UList<fictitiousDomain::body>& solved = bodiesHeld(bodies, held);
-    if (correctedIndex_ == mesh_.time().timeIndex())
+    if (outer_.correctedIndex == mesh_.time().timeIndex())
     {
         // The outer correctors solved this step already: from its start
         fd_.rewindToStepStart();
@@ -292,15 +292,15 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
     const scalar commBefore = fd_.communicationSeconds();
     const List<fictitiousDomain::result>& res = fd_.solve(U, solved, dt);
     const scalar fdComm = fd_.communicationSeconds() - commBefore;
-    fdSeconds_ += clock.timeIncrement() - fdComm;
-    commSeconds_ += fdComm;
+    costs_.fdSeconds += clock.timeIncrement() - fdComm;
+    costs_.commSeconds += fdComm;
 
     // (4) On the master, or with owned particles on each body's owner:
     // forces, torques and the granular corrector, contacts from X^n over
     // dt
     label nPoints = 0, nSurface = 0, nDropped = 0, maxIter = 0, nSub = 0;
     scalar maxError = 0;
-    const bool corrected = correctedIndex_ == mesh_.time().timeIndex();
+    const bool corrected = outer_.correctedIndex == mesh_.time().timeIndex();
     scalar lastChange = 0;
     // (by place in bodies, as V0)
     const bodyPlaces places(bodies);
@@ -330,7 +330,7 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
         const vector omega3 = b.omega + r.dOmega;
         if (corrected)
         {
-            lastChange = max(lastChange, mag(V3 - lastV_[place]));
+            lastChange = max(lastChange, mag(V3 - outer_.lastV[place]));
         }
         const scalar vp = b.shape->volume();
         Fh_[i] = rhoFluid_*(vp*(V3 - V0[place])/dt - r.sumLambda);
@@ -372,15 +372,15 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
         maxError = extremes[1];
         lastChange = extremes[2];
         nSub = evolveOwned(bodies, V3s, omega3s);
-        granularSeconds_ += clock.timeIncrement();
+        costs_.granularSeconds += clock.timeIncrement();
     }
     else
     {
-        granularSeconds_ += clock.timeIncrement();
+        costs_.granularSeconds += clock.timeIncrement();
 
         // The new state to every rank
         broadcastState();
-        commSeconds_ += clock.timeIncrement();
+        costs_.commSeconds += clock.timeIncrement();
     }
 
     // The fluid carried by each free particle moves with it: its interior
@@ -421,7 +421,7 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
         }
     }
     U.correctBoundaryConditions();
-    fdSeconds_ += clock.timeIncrement();
+    costs_.fdSeconds += clock.timeIncrement();
 
     const granularSystem::statistics s =
         owned_ ? owned_->stats() : granular_.stats();
@@ -435,7 +435,7 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
     Info<< "), momentum balance " << maxError << " m/s";
     if (corrected)
     {
-        Info<< "; the last of " << nCorrections_ + 1 << " outer"
+        Info<< "; the last of " << outer_.nCorrections + 1 << " outer"
             << " correctors changed the particle velocities by at most "
             << lastChange << " m/s";
     }
@@ -461,7 +461,7 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
         }
         writeSeriesRows();
     }
-    seriesSeconds_ += clock.timeIncrement();
+    costs_.seriesSeconds += clock.timeIncrement();
 }
 
 

@@ -125,11 +125,8 @@ Foam::fictitiousDomain::fictitiousDomain
         mesh,
         dimensionedVector(dimVelocity, Zero)
     ),
-    stepStartSource_(),
-    stepDdtCoeff_(),
-    stepStartDeviation_(),
-    stepStartOwner_(),
-    stepStartIndex_(-1),
+    stepStart_(),
+    owed_(),
     results_(),
     commSeconds_(0),
     received_(),
@@ -289,11 +286,11 @@ void Foam::fictitiousDomain::updateMesh()
     }
 
     // The step's per-cell state is made again by the next step
-    stepStartIndex_ = -1;
-    stepStartSource_.clear();
-    stepDdtCoeff_.clear();
-    stepStartDeviation_.clear();
-    stepStartOwner_.clear();
+    stepStart_.index = -1;
+    stepStart_.source.clear();
+    stepStart_.ddtCoeff.clear();
+    stepStart_.deviation.clear();
+    stepStart_.owner.clear();
 
     // A refined cell takes its parent's owner; cells merged into one take
     // one of theirs or a mean, which is no body's index when they held
@@ -331,12 +328,12 @@ void Foam::fictitiousDomain::updateMesh()
 
 void Foam::fictitiousDomain::keepStepStart(const volVectorField& U)
 {
-    stepStartIndex_ = mesh_.time().timeIndex();
-    stepStartSource_ = source_.primitiveField();
-    stepDdtCoeff_ =
+    stepStart_.index = mesh_.time().timeIndex();
+    stepStart_.source = source_.primitiveField();
+    stepStart_.ddtCoeff =
         mesh_.time().deltaTValue()*fvm::ddt(U)().A()().primitiveField();
-    stepStartDeviation_ = deviation_.primitiveField();
-    stepStartOwner_ = ghostOwner_.primitiveField();
+    stepStart_.deviation = deviation_.primitiveField();
+    stepStart_.owner = ghostOwner_.primitiveField();
 }
 
 
@@ -358,25 +355,25 @@ void Foam::fictitiousDomain::addOwed
     {
         // (from zero: 0 + x is x)
         const label g = bodyPlaces::global(bodies, b);
-        owedMomentum_.insert(g, Zero);
-        owedMoment_.insert(g, Zero);
-        owedMomentum_[g] += momentum[b];
-        owedMoment_[g] += moment[b];
+        owed_.momentum.insert(g, Zero);
+        owed_.moment.insert(g, Zero);
+        owed_.momentum[g] += momentum[b];
+        owed_.moment[g] += moment[b];
     }
 }
 
 
 void Foam::fictitiousDomain::rewindToStepStart()
 {
-    if (stepStartIndex_ != mesh_.time().timeIndex())
+    if (stepStart_.index != mesh_.time().timeIndex())
     {
         FatalErrorInFunction
             << "no state kept for time index " << mesh_.time().timeIndex()
             << ": keepStepStart() must come first in the step"
             << exit(FatalError);
     }
-    deviation_.primitiveFieldRef() = stepStartDeviation_;
-    ghostOwner_.primitiveFieldRef() = stepStartOwner_;
+    deviation_.primitiveFieldRef() = stepStart_.deviation;
+    ghostOwner_.primitiveFieldRef() = stepStart_.owner;
     deviation_.correctBoundaryConditions();
     ghostOwner_.correctBoundaryConditions();
 }

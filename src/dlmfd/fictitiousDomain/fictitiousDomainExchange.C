@@ -116,7 +116,7 @@ Foam::fictitiousDomain::solve
     // loop, without S^n and without the share of G - S^n the time scheme
     // gave it (the fluid step's ddt diagonal a/dt), so that the fluid's
     // momentum lost is the bodies' gain however G was chosen
-    const bool inOuterLoop = stepStartIndex_ == mesh_.time().timeIndex();
+    const bool inOuterLoop = stepStart_.index == mesh_.time().timeIndex();
     if (outerCorrector && !inOuterLoop)
     {
         FatalErrorInFunction
@@ -124,11 +124,11 @@ Foam::fictitiousDomain::solve
             << " the step" << exit(FatalError);
     }
     vectorField& u = U.primitiveFieldRef();
-    const scalarField& a = stepDdtCoeff_;
+    const scalarField& a = stepStart_.ddtCoeff;
     if (inOuterLoop)
     {
         const vectorField& G = source_.primitiveField();
-        u -= dt*stepStartSource_ + (dt/a)*(G - stepStartSource_);
+        u -= dt*stepStart_.source + (dt/a)*(G - stepStart_.source);
     }
     else
     {
@@ -171,12 +171,12 @@ Foam::fictitiousDomain::solve
             collect(b, global, cand, u, localIndex, con, cells);
             con.owed = owed[b];
             con.owedMoment = owedMoment[b];
-            if (owedMomentum_.found(global))
+            if (owed_.momentum.found(global))
             {
                 // Momentum the fluid gained outside the step (the wall
                 // links), by global index
-                con.owed += owedMomentum_[global];
-                con.owedMoment += owedMoment_[global];
+                con.owed += owed_.momentum[global];
+                con.owedMoment += owed_.moment[global];
             }
             if (con.centres.empty() && con.owed == vector::zero)
             {
@@ -196,29 +196,29 @@ Foam::fictitiousDomain::solve
         {
             // Momentum given to a body this rank does not hold would be
             // lost
-            forAllConstIters(owedMomentum_, iter)
+            forAllConstIters(owed_.momentum, iter)
             {
                 const label g = iter.key();
                 if
                 (
                     places_(g) < 0
                  && (
-                        owedMomentum_[g] != vector::zero
-                     || owedMoment_[g] != vector::zero
+                        owed_.momentum[g] != vector::zero
+                     || owed_.moment[g] != vector::zero
                     )
                 )
                 {
                     FatalErrorInFunction
                         << "the fluid of rank " << me << " gave particle "
-                        << g << " momentum " << owedMomentum_[g]
+                        << g << " momentum " << owed_.momentum[g]
                         << " outside the step, but the rank does not hold"
                         << " it: its list of bodies must hold every body"
                         << " near its cells (holds())" << exit(FatalError);
                 }
             }
         }
-        owedMomentum_.clear();
-        owedMoment_.clear();
+        owed_.momentum.clear();
+        owed_.moment.clear();
         // The deviations of the last step are in the contributions now;
         // this step sets those of the cells inside a body
         deviation_.primitiveFieldRef() = Zero;
@@ -260,7 +260,7 @@ Foam::fictitiousDomain::solve
         // hold comes first, as the master's part did with every body on
         // every rank (sent when its momentum was not zero)
         List<contribution> masterParts(bodies.size());
-        if (perRank_ && masterOwedMomentum_.size())
+        if (perRank_ && owed_.masterMomentum.size())
         {
             forAll(bodies, b)
             {
@@ -269,22 +269,22 @@ Foam::fictitiousDomain::solve
                 (
                     solverOf[b] == me
                  && !cand.masterHolds[b]
-                 && masterOwedMomentum_.found(g)
-                 && masterOwedMomentum_[g] != vector::zero
+                 && owed_.masterMomentum.found(g)
+                 && owed_.masterMomentum[g] != vector::zero
                 )
                 {
                     contribution& con = masterParts[b];
                     con.body = g;
-                    con.owed = masterOwedMomentum_[g];
-                    con.owedMoment = masterOwedMoment_[g];
+                    con.owed = owed_.masterMomentum[g];
+                    con.owedMoment = owed_.masterMoment[g];
                     DynamicList<const contribution*> parts(1, &con);
                     parts.append(partsOf[b]);
                     partsOf[b].transfer(parts);
                 }
             }
         }
-        masterOwedMomentum_.clear();
-        masterOwedMoment_.clear();
+        owed_.masterMomentum.clear();
+        owed_.masterMoment.clear();
 
         // Solve, and send each rank the force density of its cells and
         // their deviation from the rigid motion
@@ -370,7 +370,7 @@ Foam::fictitiousDomain::solve
         // The next corrector's force: what makes its fluid step reach
         // this solve's velocities, u* + (dt/a) (G' - G) = u
         vectorField& G = source_.primitiveFieldRef();
-        G = stepStartSource_ + a*(G - stepStartSource_);
+        G = stepStart_.source + a*(G - stepStart_.source);
     }
 
     received_.bodiesSolved += solved.size();

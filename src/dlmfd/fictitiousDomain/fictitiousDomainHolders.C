@@ -455,8 +455,8 @@ void Foam::fictitiousDomain::setMasterOwed
     Map<vector>&& moment
 )
 {
-    masterOwedMomentum_.transfer(momentum);
-    masterOwedMoment_.transfer(moment);
+    owed_.masterMomentum.transfer(momentum);
+    owed_.masterMoment.transfer(moment);
 }
 
 
