@@ -235,18 +235,6 @@ void Foam::fictitiousDomain::refuseRetired
             << " is no longer read (retired with the options it served); "
             << r.replacement.c_str() << exit(FatalIOError);
     }
-    // The one treatment by name: a misspelt one lists it
-    const word treatment
-    (
-        dict.getOrDefault<word>("surfaceTreatment", "ghostCells")
-    );
-    if (treatment != "ghostCells")
-    {
-        FatalIOErrorInFunction(dict)
-            << file << ": fictitiousDomain/surfaceTreatment " << treatment
-            << " is not a surface treatment; valid: 1 ( ghostCells )"
-            << exit(FatalIOError);
-    }
 }
 
 
