@@ -102,6 +102,54 @@ vectorField rowResiduals(const fvVectorMatrix& m, const vectorField& u)
     return r;
 }
 
+//- One fixed body (shape, centre, rotation) in a 24^3 unit box with the
+//- velocity U0 plus a shear along y: its wall links after one
+//- fictitious-domain step (which marks the body's cells), the links'
+//- matrix, and what pay() gives for a step dt (Euler, no history)
+struct fixedBodyLinks
+{
+    test::foamTestCase tc;
+    const fvMesh& mesh;
+    tmp<volVectorField> tU;
+    tmp<volScalarField> tnu;
+    List<fictitiousDomain::body> bodies;
+    autoPtr<fictitiousDomain> fd;
+    autoPtr<wallLinks> links;
+    tmp<fvVectorMatrix> tm;
+    List<vector> momentum, moment;
+
+    fixedBodyLinks
+    (
+        const particleShape& shape,
+        const point& centre,
+        const tensor& R,
+        const vector& U0,
+        const scalar shear,
+        const scalar dt
+    )
+    :
+        mesh(tc.makeBoxMesh(24, 24, 24, vector::one)),
+        tU(velocity(mesh, U0, shear)),
+        tnu(viscosity(mesh, 0.01)),
+        bodies(1),
+        momentum(1, Zero),
+        moment(1, Zero)
+    {
+        bodies[0].shape = &shape;
+        bodies[0].centre = centre;
+        bodies[0].R = R;
+        bodies[0].free = false;
+        bodies[0].index = 0;
+        fd.reset(new fictitiousDomain(mesh, dictionary()));
+        volVectorField Ustep(tU());
+        fd->solve(Ustep, bodies, dt);
+        links.reset(new wallLinks(mesh, true));
+        links->update(fd->ghostOwner(), bodies, fd->images());
+        tm = links->matrix(tU(), tnu());
+        links->pay(tU(), dt, 1, momentum, moment);
+    }
+};
+
 } // End anonymous namespace
 
 
@@ -200,70 +248,38 @@ TEST(wallLinks, whatTheFluidGainsAtTheLinksIsTheMatrixsLinkTermsAndTheBodyPaysIt
     // on a 24^3 box: the gain that pay() returns for the bodies over a step
     // dt (Euler, no history) is minus dt times the sum over the cells of
     // what the links' matrix adds to their rows, to round-off
+    const scalar dt = 0.01;
+    particleShapes::sphere ball("ball", 0.35);
+    particleShapes::platonicSolid cube("cube", "cube", 0.3);
     for (const bool isCube : {false, true})
     {
         SCOPED_TRACE(isCube ? "cube" : "sphere");
-        test::foamTestCase tc;
-        const fvMesh& mesh = tc.makeBoxMesh(24, 24, 24, vector::one);
-        tmp<volVectorField> tU = velocity(mesh, vector(0.2, 0.01, -0.03), 0.5);
-        const tmp<volScalarField> tnu = viscosity(mesh, 0.01);
-        particleShapes::sphere ball("ball", 0.35);
-        particleShapes::platonicSolid cube("cube", "cube", 0.3);
-        List<fictitiousDomain::body> bodies(1);
-        bodies[0].shape = isCube ? static_cast<const particleShape*>(&cube) : &ball;
-        bodies[0].centre = point(0.51, 0.48, 0.5);
-        bodies[0].R = isCube ? quaternion(normalised(vector(1, 2, 3)), 0.7).R() : tensor::I;
-        bodies[0].free = false;
-        bodies[0].index = 0;
-
-        // The body's cells (ghostOwner) from one fictitious-domain step
-        fictitiousDomain fd(mesh, dictionary());
-        volVectorField Ustep(tU());
-        fd.solve(Ustep, bodies, 0.01);
-
-        wallLinks links(mesh, true);
-        links.update(fd.ghostOwner(), bodies, fd.images());
-        ASSERT_GT(links.size(), 100);
-        const tmp<fvVectorMatrix> tm = links.matrix(tU(), tnu());
-        const scalar dt = 0.01;
-        List<vector> momentum(1, Zero), moment(1, Zero);
-        links.pay(tU(), dt, 1, momentum, moment);
-
-        const vector fromMatrix = -dt*sum(rowResiduals(tm(), tU().primitiveField()));
-        Info<< (isCube ? "cube" : "sphere") << ": " << links.size() << " links, the fluid gained "
-            << momentum[0] << " (from the matrix " << fromMatrix << "), moment " << moment[0]
+        const fixedBodyLinks b
+        (
+            isCube ? static_cast<const particleShape&>(cube) : ball,
+            point(0.51, 0.48, 0.5),
+            isCube ? quaternion(normalised(vector(1, 2, 3)), 0.7).R() : tensor::I,
+            vector(0.2, 0.01, -0.03), 0.5, dt
+        );
+        ASSERT_GT(b.links->size(), 100);
+        const vector fromMatrix = -dt*sum(rowResiduals(b.tm(), b.tU().primitiveField()));
+        Info<< (isCube ? "cube" : "sphere") << ": " << b.links->size() << " links, the fluid gained "
+            << b.momentum[0] << " (from the matrix " << fromMatrix << "), moment " << b.moment[0]
             << endl;
-        EXPECT_LT(mag(momentum[0] - fromMatrix), 1e-12*mag(fromMatrix));
+        EXPECT_LT(mag(b.momentum[0] - fromMatrix), 1e-12*mag(fromMatrix));
         // The fluid streaming along +x loses momentum to the body at rest:
         // the body, paying the fluid's gain, is pushed downstream
-        EXPECT_LT(momentum[0].x(), 0);
-        EXPECT_GT(mag(momentum[0].x()), 3*mag(momentum[0].y()));
+        EXPECT_LT(b.momentum[0].x(), 0);
+        EXPECT_GT(mag(b.momentum[0].x()), 3*mag(b.momentum[0].y()));
     }
 
     // A sphere centred between the cells of a symmetric mesh in a uniform
     // stream: no torque at the links (the flow and the links are symmetric
     // about the stream's axis through it)
-    test::foamTestCase tc;
-    const fvMesh& mesh = tc.makeBoxMesh(24, 24, 24, vector::one);
-    tmp<volVectorField> tU = velocity(mesh, vector(0.2, 0, 0), 0);
-    const tmp<volScalarField> tnu = viscosity(mesh, 0.01);
-    particleShapes::sphere ball("ball", 0.35);
-    List<fictitiousDomain::body> bodies(1);
-    bodies[0].shape = &ball;
-    bodies[0].centre = point(0.5, 0.5, 0.5);
-    bodies[0].free = false;
-    bodies[0].index = 0;
-    fictitiousDomain fd(mesh, dictionary());
-    volVectorField Ustep(tU());
-    fd.solve(Ustep, bodies, 0.01);
-    wallLinks links(mesh, true);
-    links.update(fd.ghostOwner(), bodies, fd.images());
-    links.matrix(tU(), tnu());
-    List<vector> momentum(1, Zero), moment(1, Zero);
-    links.pay(tU(), 0.01, 1, momentum, moment);
-    EXPECT_LT(momentum[0].x(), 0);
-    EXPECT_LT(mag(momentum[0].y()) + mag(momentum[0].z()), 1e-12*mag(momentum[0].x()));
-    EXPECT_LT(mag(moment[0]), 1e-12*mag(momentum[0])*0.175);
+    const fixedBodyLinks b(ball, point(0.5, 0.5, 0.5), tensor::I, vector(0.2, 0, 0), 0, dt);
+    EXPECT_LT(b.momentum[0].x(), 0);
+    EXPECT_LT(mag(b.momentum[0].y()) + mag(b.momentum[0].z()), 1e-12*mag(b.momentum[0].x()));
+    EXPECT_LT(mag(b.moment[0]), 1e-12*mag(b.momentum[0])*0.175);
 }
 
 

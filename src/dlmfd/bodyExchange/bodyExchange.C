@@ -207,7 +207,7 @@ void Foam::bodyExchange::sendResults
         return;
     }
     clockTime clock;
-    constexpr label nValues = 17;
+    constexpr label nValues = 16;
     const label nProcs = Pstream::nProcs();
     const label self = Pstream::myProcNo();
 
@@ -244,8 +244,7 @@ void Foam::bodyExchange::sendResults
             v[12] = r.nInterior;
             v[13] = r.nSurface;
             v[14] = r.nSurfaceDropped;
-            v[15] = r.iterations;
-            v[16] = r.constraintError;
+            v[15] = r.constraintError;
         }
         UOPstream os(q, buffers);
         os << labelList(toGlobal[q]) << values;
@@ -285,8 +284,7 @@ void Foam::bodyExchange::sendResults
             r.nInterior = label(v[12]);
             r.nSurface = label(v[13]);
             r.nSurfaceDropped = label(v[14]);
-            r.iterations = label(v[15]);
-            r.constraintError = v[16];
+            r.constraintError = v[15];
         }
     }
     commSeconds += clock.elapsedTime();

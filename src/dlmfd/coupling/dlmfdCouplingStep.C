@@ -298,7 +298,7 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
     // (4) On the master, or with owned particles on each body's owner:
     // forces, torques and the granular corrector, contacts from X^n over
     // dt
-    label nPoints = 0, nSurface = 0, nDropped = 0, maxIter = 0, nSub = 0;
+    label nPoints = 0, nSurface = 0, nDropped = 0, nSub = 0;
     scalar maxError = 0;
     const bool corrected = outer_.correctedIndex == mesh_.time().timeIndex();
     scalar lastChange = 0;
@@ -323,7 +323,6 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
         nPoints += r.nInterior + r.nSurface;
         nSurface += r.nSurface;
         nDropped += r.nSurfaceDropped;
-        maxIter = max(maxIter, r.iterations);
         maxError = max(maxError, r.constraintError);
 
         const vector V3 = b.V + r.dV;
@@ -363,14 +362,13 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
         // exactly)
         labelList counts({nPoints, nSurface, nDropped});
         Pstream::listCombineGather(counts, plusEqOp<label>());
-        scalarList extremes({scalar(maxIter), maxError, lastChange});
+        scalarList extremes({maxError, lastChange});
         Pstream::listCombineGather(extremes, maxEqOp<scalar>());
         nPoints = counts[0];
         nSurface = counts[1];
         nDropped = counts[2];
-        maxIter = label(extremes[0]);
-        maxError = extremes[1];
-        lastChange = extremes[2];
+        maxError = extremes[0];
+        lastChange = extremes[1];
         nSub = evolveOwned(bodies, V3s, omega3s);
         costs_.granularSeconds += clock.timeIncrement();
     }

@@ -10,11 +10,11 @@ License
     option) any later version. See <http://www.gnu.org/licenses/>.
 
 Description
-    The cells of the ghost-cell treatment (surfaceTreatment ghostCells):
-    which cells each body holds (inside it, and the fluid cells its
-    surface cuts) and which fluid cells its near-wall fits may read; and
-    the deviations that cells leaving the bodies take into the fluid.
-    Solving a body from them: fictitiousDomainGhostCells.C.
+    The cells of each body: those inside it (claimed by the closest
+    centre), and, where the surface treatment reads them, the fluid cells
+    near its surface; and what the bodies owe for the deviations that
+    cells leaving them take into the fluid. Solving a body from them: the
+    surface treatment (Foam::surfaceTreatment::solveBody).
 
 \*---------------------------------------------------------------------------*/
 

@@ -113,7 +113,7 @@ void Foam::periodicImages::checkClearance
         {
             FatalErrorInFunction
                 << "particle " << particle << ": its bounding radius with"
-                << " the stencils, " << reach << " m, is not below half the"
+                << " the reach of its cells, " << reach << " m, is not below half the"
                 << " period " << period_[d] << " m in direction "
                 << label(d) << "; the periodic box must be longer than"
                 << " twice that" << exit(FatalError);

@@ -205,8 +205,9 @@ void Foam::wallLinks::payAmongHolders
     }
 
     // Each rank pays its own share; the master (c - 1)/c of the history of
-    // the bodies it holds; of each other, that share is left masterOwed (the
-    // solver adds it as the master's part: 0 + x is x)
+    // the bodies it holds; of each other, that share is left in
+    // masterOwedMomentum (the solver adds it as the master's part: 0 + x is
+    // x)
     const scalar carried = (ddtCoeff - 1)/ddtCoeff;
     masterOwedMomentum.clear();
     masterOwedMoment.clear();

@@ -288,7 +288,6 @@ void Foam::surfaceTreatments::ghostCells::solveBody
     res.nInterior = nIn - nGhost;
     res.nSurface = nGhost;
     res.nSurfaceDropped = nAlone;
-    res.iterations = 0;
 
     // What is left of the linear momentum balance (round-off), as a
     // velocity of the body's volume [m/s]
