@@ -2,20 +2,25 @@
 postProcessing/dlmfdParticles/<startTime>/particles.dat.
 
 Each line: time id x y z qw qx qy qz Ux Uy Uz omegax omegay omegaz Fhx Fhy
-Fhz Thx Thy Thz (SI units, world frame; F and T hydrodynamic), '#' comments.
+Fhz Thx Thy Thz Fcx Fcy Fcz Tcx Tcy Tcz (SI units, world frame; Fh and Th
+the hydrodynamic force and torque, Fc and Tc the contacts' mean over the
+step), '#' comments. A series without the last six columns (written by
+dlmfdFoam before they were added) is read with rows of 21 numbers.
 A restart writes a new file under its own start time; its rows replace
 those of earlier files from that time on.
 
     import particlesData
-    byTime = particlesData.read(case)          # {time: {id: [21 floats]}}
+    byTime = particlesData.read(case)          # {time: {id: [27 floats]}}
     i = particlesData.COLUMN["Uz"]             # 11
 """
 import glob
 import os
 
 COLUMNS = ("time", "id", "x", "y", "z", "qw", "qx", "qy", "qz", "Ux", "Uy", "Uz",
-           "omegax", "omegay", "omegaz", "Fhx", "Fhy", "Fhz", "Thx", "Thy", "Thz")
+           "omegax", "omegay", "omegaz", "Fhx", "Fhy", "Fhz", "Thx", "Thy", "Thz",
+           "Fcx", "Fcy", "Fcz", "Tcx", "Tcy", "Tcz")
 COLUMN = {name: i for i, name in enumerate(COLUMNS)}
+WITHOUT_CONTACTS = COLUMN["Fcx"]
 
 
 def files(case):
@@ -46,8 +51,9 @@ def read(case, ids=None, start=None):
                     row = [float(x) for x in line.split()]
                 except ValueError:
                     raise ValueError(f"{path}, line {n}: not a row of numbers") from None
-                if len(row) != len(COLUMNS):
-                    raise ValueError(f"{path}, line {n}: {len(row)} columns, expected {len(COLUMNS)}")
+                if len(row) not in (len(COLUMNS), WITHOUT_CONTACTS):
+                    raise ValueError(f"{path}, line {n}: {len(row)} columns, expected {len(COLUMNS)}"
+                                     f" (or {WITHOUT_CONTACTS} without the contact columns)")
                 if (ids is not None and int(row[1]) not in ids) or (start is not None and row[0] < start):
                     continue
                 byTime.setdefault(row[0], {})[int(row[1])] = row

@@ -62,6 +62,29 @@ autoPtr<granularSystem> makeSystem
 
 const std::string bigBox = "min (-1 -1 -1); max (1 1 1);";
 
+
+//- A cube, a tetrahedron and a sphere on collision courses, oblique, with
+//- friction and spin, in no gravity
+autoPtr<granularSystem> threeBodyCollision()
+{
+    auto sys = makeSystem
+    (
+        "cube { type cube; edge 0.01; } tet { type tetrahedron; D 0.012; }"
+        " ball { type sphere; D 0.008; }",
+        "en 0.6; muc 0.4; kn 2e3;",
+        "", bigBox
+    );
+    sys->addParticle(0, "cube", "glass", point(0, 0, 0), quaternion(vector(1, 2, 3)/mag(vector(1, 2, 3)), 0.4));
+    sys->addParticle(1, "tet", "glass", point(0.0125, 0.002, 0.001));
+    sys->addParticle(2, "ball", "glass", point(-0.011, -0.003, 0.002));
+    sys->updated();
+    sys->particle(0).setOmega(vector(3, -5, 7));
+    sys->particle(1).setVelocity(vector(-0.6, 0.05, 0));
+    sys->particle(1).setOmega(vector(0, 20, -4));
+    sys->particle(2).setVelocity(vector(0.7, 0.1, -0.05));
+    return sys;
+}
+
 //- Relative errors of e_n and T_c in a head-on collision of two spheres
 void headOn(const scalar en, const label N, scalar& eErr, scalar& TcErr)
 {
@@ -381,21 +404,7 @@ TEST(granularSystem, pairCollisionsConserveMomentum)
 {
     // Cube against tetrahedron and sphere against cube, oblique, with
     // friction and spin: linear momentum to round-off (1e-13 relative)
-    auto sys = makeSystem
-    (
-        "cube { type cube; edge 0.01; } tet { type tetrahedron; D 0.012; }"
-        " ball { type sphere; D 0.008; }",
-        "en 0.6; muc 0.4; kn 2e3;",
-        "", bigBox
-    );
-    sys->addParticle(0, "cube", "glass", point(0, 0, 0), quaternion(vector(1, 2, 3)/mag(vector(1, 2, 3)), 0.4));
-    sys->addParticle(1, "tet", "glass", point(0.0125, 0.002, 0.001));
-    sys->addParticle(2, "ball", "glass", point(-0.011, -0.003, 0.002));
-    sys->updated();
-    sys->particle(0).setOmega(vector(3, -5, 7));
-    sys->particle(1).setVelocity(vector(-0.6, 0.05, 0));
-    sys->particle(1).setOmega(vector(0, 20, -4));
-    sys->particle(2).setVelocity(vector(0.7, 0.1, -0.05));
+    auto sys = threeBodyCollision();
 
     const vector P0 = sys->momentum();
     const scalar scale =
@@ -411,6 +420,87 @@ TEST(granularSystem, pairCollisionsConserveMomentum)
         << nl;
     EXPECT_GT(contacts, 20);
     EXPECT_LT(err, 1e-13);
+}
+
+
+TEST(granularSystem, contactImpulseIsTheMomentumTheContactsGave)
+{
+    // No gravity, no outside force: over each step of 10 sub-steps the
+    // contacts' impulse a particle reports (its output, the mean contact
+    // force times the step) is its change of momentum, and of angular
+    // momentum (isotropic bodies: I domega); the pair's impulses cancel
+    auto sys = threeBodyCollision();
+
+    const scalar Deltat = 10*sys->maxSubStep();
+    scalar worst = 0, worstAngular = 0, largest = 0, sumError = 0;
+    for (label k = 0; k < 40; ++k)
+    {
+        List<vector> P0(sys->size()), L0(sys->size());
+        for (label i = 0; i < sys->size(); ++i)
+        {
+            const rigidParticle& p = sys->particle(i);
+            ASSERT_TRUE(p.isotropic()) << i;
+            P0[i] = p.mass()*p.velocity();
+            L0[i] = p.inertia().xx()*p.omega();
+        }
+        sys->evolve(Deltat);
+        vector sumI(Zero);
+        for (label i = 0; i < sys->size(); ++i)
+        {
+            const rigidParticle& p = sys->particle(i);
+            const vector I = p.contactImpulse();
+            worst = max(worst, mag(p.mass()*p.velocity() - P0[i] - I));
+            worstAngular = max
+            (
+                worstAngular,
+                mag(p.inertia().xx()*p.omega() - L0[i] - p.contactAngularImpulse())
+            );
+            largest = max(largest, mag(I));
+            sumI += I;
+        }
+        sumError = max(sumError, mag(sumI));
+    }
+    std::cout << "largest contact impulse " << largest << " N s; momentum"
+        << " change less impulse at most " << worst << ", angular "
+        << worstAngular << "; sum of the impulses at most " << sumError
+        << nl;
+    EXPECT_GT(largest, 1e-6) << "no contact";
+    // Round-off of the kicks' sums: 1e-12 of the largest impulse
+    EXPECT_LT(worst, 1e-12*largest);
+    EXPECT_LT(sumError, 1e-12*largest);
+    EXPECT_LT(worstAngular, 1e-12*largest*0.01);
+}
+
+
+TEST(granularSystem, restingBallsContactForceCarriesItsWeight)
+{
+    // A ball dropped on the floor comes to rest (e_n 0.3): from then on the
+    // contacts' mean force over each step, the output column, is its
+    // weight: m g to 1e-6 (what is left of the damped bounce)
+    const scalar g = 9.81;
+    auto sys = makeSystem
+    (
+        "ball { type sphere; D 0.01; }",
+        "en 0.3; muc 0.3; maxOverlapRatio 1e-3; impactVelocity 0.3;"
+        " referenceDiameter 0.01;",
+        "floor { point (0 0 0); normal (0 0 1); material steel; }",
+        bigBox
+    );
+    sys->setGravity(vector(0, 0, -g));
+    sys->addParticle(0, "ball", "glass", point(0, 0, 0.01));
+    sys->updated();
+    const scalar Dt = 1e-3;
+    for (label step = 0; step < 2000; ++step)
+    {
+        sys->evolve(Dt);
+    }
+    const rigidParticle& p = sys->particle(0);
+    const vector Fc(p.contactImpulse()/Dt);
+    const scalar err = mag(Fc - vector(0, 0, p.mass()*g))/(p.mass()*g);
+    Info<< "resting ball: contact force " << Fc << " N, weight "
+        << p.mass()*g << " N, relative difference " << err << nl;
+    EXPECT_LT(err, 1e-6);
+    EXPECT_LT(mag(p.velocity()), 1e-6) << "not at rest";
 }
 
 
@@ -586,12 +676,19 @@ TEST(granularSystem, restartFromWrittenStateContinuesBitwise)
         a->evolve(1e-4);
         b->evolve(1e-4);
     }
+    label touching = 0;
     for (label i = 0; i < a->size(); ++i)
     {
         EXPECT_EQ(a->particle(i).position(), b->particle(i).position()) << i;
         EXPECT_EQ(a->particle(i).velocity(), b->particle(i).velocity()) << i;
         EXPECT_EQ(a->particle(i).omega(), b->particle(i).omega()) << i;
+        // The contacts' share of the force, written and read back, and
+        // the impulse summed from it
+        EXPECT_EQ(a->particle(i).contactForce(), b->particle(i).contactForce()) << i;
+        EXPECT_EQ(a->particle(i).contactImpulse(), b->particle(i).contactImpulse()) << i;
+        touching += mag(a->particle(i).contactForce()) > 0;
     }
+    EXPECT_GT(touching, 0) << "no particle in contact at the end";
     rmDir(dir, true);
 }
 

@@ -329,7 +329,7 @@ Foam::dlmfdCoupling::dlmfdCoupling
     Th_(),
     series_(),
     seriesInterval_(properties_.getOrDefault<label>("seriesInterval", 1)),
-    vtk_(mesh.time().globalPath()/"VTK", mesh.time().value()),
+    vtk_(mesh.time().globalPath()/"VTK", mesh.time().value(), true),
     costs_(),
     outer_()
 {
@@ -486,7 +486,8 @@ Foam::dlmfdCoupling::dlmfdCoupling
         series_()
             << (seriesPerRank() ? "# timeIndex globalIndex " : "# ")
             << "time id x y z qw qx qy qz Ux Uy Uz omegax omegay omegaz"
-            << " Fhx Fhy Fhz Thx Thy Thz  (SI units, world frame)" << nl;
+            << " Fhx Fhy Fhz Thx Thy Thz Fcx Fcy Fcz Tcx Tcy Tcz"
+            << "  (SI units, world frame)" << nl;
     }
     if (mesh.time().timeIndex() == 0)
     {
@@ -520,13 +521,18 @@ void Foam::dlmfdCoupling::write()
 void Foam::dlmfdCoupling::writeVTK()
 {
     const Time& runTime = mesh_.time();
+    // (the step just taken: none before the first)
+    const granularVTKWriter::loads given
+    {
+        runTime.timeIndex() > 0 ? runTime.deltaTValue() : 0, &Fh_, &Th_
+    };
     if (seriesPerRank())
     {
-        vtk_.writePieces(*part_, runTime.value(), runTime.timeIndex());
+        vtk_.writePieces(*part_, runTime.value(), runTime.timeIndex(), given);
     }
     else if (Pstream::master())
     {
-        vtk_.write(scene(), runTime.value(), runTime.timeIndex());
+        vtk_.write(scene(), runTime.value(), runTime.timeIndex(), given);
     }
 }
 

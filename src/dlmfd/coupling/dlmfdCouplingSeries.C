@@ -79,6 +79,7 @@ void Foam::dlmfdCoupling::writeSeriesRows()
     }
     OFstream& os = series_();
     const scalar t = mesh_.time().value();
+    const scalar dt = mesh_.time().deltaTValue();
     // (i: the global index)
     const auto row = [&](const label i)
     {
@@ -87,6 +88,10 @@ void Foam::dlmfdCoupling::writeSeriesRows()
         const point& x = p.position();
         const vector& V = p.velocity();
         const vector& w = p.omega();
+        // The mean contact force and torque over the step: the contacts'
+        // impulse of the granular step over its length
+        const vector Fc(p.contactImpulse()/dt);
+        const vector Tc(p.contactAngularImpulse()/dt);
         os  << t << ' ' << granular_.id(mirrorPlace(i)) << ' '
             << x.x() << ' ' << x.y() << ' ' << x.z() << ' '
             << q.w() << ' ' << q.v().x() << ' ' << q.v().y() << ' '
@@ -94,7 +99,9 @@ void Foam::dlmfdCoupling::writeSeriesRows()
             << V.x() << ' ' << V.y() << ' ' << V.z() << ' '
             << w.x() << ' ' << w.y() << ' ' << w.z() << ' '
             << Fh_[i].x() << ' ' << Fh_[i].y() << ' ' << Fh_[i].z() << ' '
-            << Th_[i].x() << ' ' << Th_[i].y() << ' ' << Th_[i].z()
+            << Th_[i].x() << ' ' << Th_[i].y() << ' ' << Th_[i].z() << ' '
+            << Fc.x() << ' ' << Fc.y() << ' ' << Fc.z() << ' '
+            << Tc.x() << ' ' << Tc.y() << ' ' << Tc.z()
             << nl;
     };
     if (seriesPerRank())

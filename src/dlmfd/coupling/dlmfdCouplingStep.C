@@ -258,8 +258,6 @@ void Foam::dlmfdCoupling::correct(volVectorField& U)
 void Foam::dlmfdCoupling::evolve(volVectorField& U)
 {
     const scalar dt = mesh_.time().deltaTValue();
-    // (the particles of the step's list: the whole scene, or the mirror)
-    const label n = granular_.size();
     clockTime clock;
 
     // (2) Granular predictor and the bodies of the constraint

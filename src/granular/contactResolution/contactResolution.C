@@ -73,11 +73,11 @@ bool Foam::contactResolution::pair
                *law.force(c.depths[k], c.normal, Uk, M, dt, unused);
             if (!iHeld)
             {
-                pi.addForceAt(Fk, pk);
+                pi.addContactForceAt(Fk, pk);
             }
             if (!jHeld)
             {
-                pj.addForceAt(-Fk, pk - shift);
+                pj.addContactForceAt(-Fk, pk - shift);
             }
         }
         return true;
@@ -87,11 +87,11 @@ bool Foam::contactResolution::pair
     const vector F = history.force(law, c, Urel, M, dt, i, j);
     if (!iHeld)
     {
-        pi.addForceAt(F, c.position);
+        pi.addContactForceAt(F, c.position);
     }
     if (!jHeld)
     {
-        pj.addForceAt(-F, c.position - shift);
+        pj.addContactForceAt(-F, c.position - shift);
     }
     if (c.spread > 0)
     {
@@ -101,11 +101,11 @@ bool Foam::contactResolution::pair
         );
         if (!iHeld)
         {
-            pi.addTorque(T);
+            pi.addContactTorque(T);
         }
         if (!jHeld)
         {
-            pj.addTorque(-T);
+            pj.addContactTorque(-T);
         }
     }
     return true;
@@ -127,10 +127,10 @@ void Foam::contactResolution::wall
     pi.predictedVelocities(dt, Ui, omegai);
     const vector Urel = Ui + (omegai ^ (c.position - pi.position()));
     const vector F = history.force(law, c, Urel, pi.mass(), dt, i, -1 - w);
-    pi.addForceAt(F, c.position);
+    pi.addContactForceAt(F, c.position);
     if (c.spread > 0)
     {
-        pi.addTorque
+        pi.addContactTorque
         (
             law.regionTorque
             (

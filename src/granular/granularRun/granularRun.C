@@ -272,13 +272,23 @@ void Foam::granularRun::run()
     const bool pieces = owned_.valid() && Pstream::parRun();
     const auto writeVTK = [&](const granularSystem* scene)
     {
+        // (the step just taken, for the contacts' mean force: none
+        // before the first)
+        const granularVTKWriter::loads given
+        {
+            runTime_.timeIndex() > 0 ? runTime_.deltaTValue() : 0,
+            nullptr, nullptr
+        };
         if (pieces)
         {
-            vtk.writePieces(granular, runTime_.value(), runTime_.timeIndex());
+            vtk.writePieces
+            (
+                granular, runTime_.value(), runTime_.timeIndex(), given
+            );
         }
         else if (scene)
         {
-            vtk.write(*scene, runTime_.value(), runTime_.timeIndex());
+            vtk.write(*scene, runTime_.value(), runTime_.timeIndex(), given);
         }
     };
     if (runTime_.timeIndex() == 0 || !isDir(runTime_.globalPath()/"VTK"))

@@ -479,9 +479,19 @@ Foam::vector Foam::granularSystem::momentum() const
 }
 
 
+void Foam::granularSystem::startContactImpulses()
+{
+    for (rigidParticle& p : particles_)
+    {
+        p.startContactImpulse();
+    }
+}
+
+
 Foam::label Foam::granularSystem::evolve(const scalar Deltat)
 {
     resetStatistics(false);
+    startContactImpulses();
 
     if (integrator_.moving().empty())
     {

@@ -279,19 +279,21 @@ void Foam::granularSystem::readParticles
                 << exit(FatalIOError);
         }
 
-        // Optional: velocity, angular velocity (world), force, torque
-        FixedList<vector, 4> extra(Zero);
+        // Optional: velocity, angular velocity (world), force, torque and
+        // the contacts' share of these two (a restart)
+        FixedList<vector, 6> extra(Zero);
         label nExtra = 0;
         token next(is);
         while (next == token::BEGIN_LIST)
         {
-            if (nExtra == 4)
+            if (nExtra == 6)
             {
                 FatalIOErrorInFunction(is)
                     << "in " << file << " line " << next.lineNumber()
-                    << ": particle " << id << " has more than four vectors"
+                    << ": particle " << id << " has more than six vectors"
                     << " after its orientation (velocity, angular velocity,"
-                    << " force, torque)" << exit(FatalIOError);
+                    << " force, torque, contact force, contact torque)"
+                    << exit(FatalIOError);
             }
             is.putBack(next);
             is >> extra[nExtra++];
@@ -319,7 +321,7 @@ void Foam::granularSystem::readParticles
         p.setMotion(rigidParticle::motionKindNames[motionName]);
         p.setVelocity(extra[0]);
         p.setOmega(extra[1]);
-        p.setStartForces(extra[2], extra[3]);
+        p.setStartForces(extra[2], extra[3], extra[4], extra[5]);
 
         t = token(is);
     }
@@ -402,7 +404,7 @@ void Foam::granularSystem::writeParticles(const fileName& dir) const
             << "}\n";
         IOobject::writeDivider(os);
         os  << "\n// id shape material motion position (w x y z) velocity"
-            << " omega force torque\n"
+            << " omega force torque contactForce contactTorque\n"
             << "particles\n(\n";
         for (label i = 0; i < size(); ++i)
         {
@@ -415,7 +417,8 @@ void Foam::granularSystem::writeParticles(const fileName& dir) const
                 << q.w() << ' ' << q.v().x() << ' ' << q.v().y() << ' '
                 << q.v().z() << ") "
                 << p.velocity() << ' ' << p.omega() << ' '
-                << p.force() << ' ' << p.torque() << ")\n";
+                << p.force() << ' ' << p.torque() << ' '
+                << p.contactForce() << ' ' << p.contactTorque() << ")\n";
         }
         os  << ");\n";
 

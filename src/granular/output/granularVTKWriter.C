@@ -32,6 +32,11 @@ namespace
 {
     using namespace Foam;
 
+    //- The vectors every particle carries, after its id (and a sphere's
+    //- diameter)
+    const char* const vectorNames[] =
+        {"velocity", "omega", "contactForce", "contactTorque"};
+
     void writeVectors
     (
         Ostream& os,
@@ -135,24 +140,28 @@ namespace
 }
 
 
-// * * * * * * * * * * * * * Static Member Data  * * * * * * * * * * * * * //
-
-// The arrays writeParticles writes, in its order
-const std::vector<Foam::granularVTKWriter::dataArray>
-    Foam::granularVTKWriter::polyhedraArrays
-{
-    {"Int32", "id", 1}, {"Float64", "velocity", 3}, {"Float64", "omega", 3}
-};
-
-const std::vector<Foam::granularVTKWriter::dataArray>
-    Foam::granularVTKWriter::sphereArrays
-{
-    {"Int32", "id", 1}, {"Float64", "diameter", 1},
-    {"Float64", "velocity", 3}, {"Float64", "omega", 3}
-};
-
-
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+std::vector<Foam::granularVTKWriter::dataArray>
+Foam::granularVTKWriter::arrays(const bool spheres) const
+{
+    std::vector<dataArray> a{{"Int32", "id", 1}};
+    if (spheres)
+    {
+        a.push_back({"Float64", "diameter", 1});
+    }
+    for (const char* name : vectorNames)
+    {
+        a.push_back({"Float64", name, 3});
+    }
+    if (hydrodynamic_)
+    {
+        a.push_back({"Float64", "hydrodynamicForce", 3});
+        a.push_back({"Float64", "hydrodynamicTorque", 3});
+    }
+    return a;
+}
+
 
 Foam::List<Foam::Tuple2<Foam::word, Foam::scalar>>
 Foam::granularVTKWriter::readSeries(const fileName& file, const scalar t)
@@ -249,14 +258,16 @@ void Foam::granularVTKWriter::writePieceIndex
 Foam::granularVTKWriter::granularVTKWriter
 (
     const fileName& dir,
-    const scalar startTime
+    const scalar startTime,
+    const bool hydrodynamic
 )
 :
     dir_(dir),
     polyhedra_(readSeries(dir/"polyhedra.vtp.series", startTime)),
     spheres_(readSeries(dir/"spheres.vtp.series", startTime)),
     polyhedraPieces_(readSeries(dir/"polyhedra.pvtp.series", startTime)),
-    spherePieces_(readSeries(dir/"spheres.pvtp.series", startTime))
+    spherePieces_(readSeries(dir/"spheres.pvtp.series", startTime)),
+    hydrodynamic_(hydrodynamic)
 {}
 
 
@@ -267,19 +278,49 @@ void Foam::granularVTKWriter::writeParticles
     const granularSystem& system,
     const bool ownedOnly,
     const fileName& polyFile,
-    const fileName& sphereFile
+    const fileName& sphereFile,
+    const loads& given
 ) const
 {
+    if
+    (
+        hydrodynamic_
+     && (!given.hydrodynamicForce || !given.hydrodynamicTorque)
+    )
+    {
+        FatalErrorInFunction
+            << "the VTK files of " << dir_ << " carry the hydrodynamic force"
+            << " and torque, but none were given" << exit(FatalError);
+    }
+    const label nVectors = arrays(false).size() - 1;
+
+    // A particle's vectors, in the order of arrays()
+    std::vector<vector> v(nVectors);
+    const auto particleVectors = [&](const label i, const rigidParticle& p)
+    {
+        v[0] = p.velocity();
+        v[1] = p.omega();
+        const scalar byDt = given.Deltat > 0 ? 1/given.Deltat : 0;
+        v[2] = byDt*p.contactImpulse();
+        v[3] = byDt*p.contactAngularImpulse();
+        if (hydrodynamic_)
+        {
+            const label g = system.globalIndex(i);
+            v[4] = (*given.hydrodynamicForce)[g];
+            v[5] = (*given.hydrodynamicTorque)[g];
+        }
+    };
+
     // Spheres: one point each
     DynamicList<point> centres;
     DynamicList<scalar> diameters;
     DynamicList<label> sphereIds;
-    DynamicList<vector> sphereU, sphereOmega;
+    std::vector<DynamicList<vector>> sphereVectors(nVectors);
 
     // Polyhedra: their faces
     DynamicList<point> points;
     DynamicList<label> connectivity, offsets, faceIds;
-    DynamicList<vector> faceU, faceOmega;
+    std::vector<DynamicList<vector>> faceVectors(nVectors);
 
     for (label i = 0; i < system.size(); ++i)
     {
@@ -288,15 +329,28 @@ void Foam::granularVTKWriter::writeParticles
             continue;
         }
         const rigidParticle& p = system.particle(i);
+        particleVectors(i, p);
         if (const auto* s = isA<particleShapes::sphere>(p.shape()))
         {
             centres.append(p.position());
             diameters.append(2*s->radius());
             sphereIds.append(system.id(i));
-            sphereU.append(p.velocity());
-            sphereOmega.append(p.omega());
+            for (label k = 0; k < nVectors; ++k)
+            {
+                sphereVectors[k].append(v[k]);
+            }
             continue;
         }
+        // A face of the particle's surface: its cell data
+        const auto addFaceData = [&]()
+        {
+            offsets.append(connectivity.size());
+            faceIds.append(system.id(i));
+            for (label k = 0; k < nVectors; ++k)
+            {
+                faceVectors[k].append(v[k]);
+            }
+        };
         if (const auto* c = isA<particleShapes::circle>(p.shape()))
         {
             // A 2D disc: drawn as a prism of nSides sides, one cell deep,
@@ -308,24 +362,21 @@ void Foam::granularVTKWriter::writeParticles
             {
                 const scalar a =
                     constant::mathematical::twoPi*(k % nSides)/nSides;
-                const vector v
+                const vector corner
                 (
                     c->radius()*std::cos(a),
                     c->radius()*std::sin(a),
                     (k < nSides ? -0.5 : 0.5)*c->depth()
                 );
-                points.append(p.position() + (R & v));
+                points.append(p.position() + (R & corner));
             }
             const auto addFace = [&](const labelList& f)
             {
-                for (const label v : f)
+                for (const label corner : f)
                 {
-                    connectivity.append(start + v);
+                    connectivity.append(start + corner);
                 }
-                offsets.append(connectivity.size());
-                faceIds.append(system.id(i));
-                faceU.append(p.velocity());
-                faceOmega.append(p.omega());
+                addFaceData();
             };
             labelList bottom(nSides), top(nSides);
             for (label k = 0; k < nSides; ++k)
@@ -352,22 +403,21 @@ void Foam::granularVTKWriter::writeParticles
         }
         const tensor R = p.R();
         const label start = points.size();
-        for (const point& v : poly->points())
+        for (const point& corner : poly->points())
         {
-            points.append(p.position() + (R & v));
+            points.append(p.position() + (R & corner));
         }
         for (const face& f : poly->faces())
         {
-            for (const label v : f)
+            for (const label corner : f)
             {
-                connectivity.append(start + v);
+                connectivity.append(start + corner);
             }
-            offsets.append(connectivity.size());
-            faceIds.append(system.id(i));
-            faceU.append(p.velocity());
-            faceOmega.append(p.omega());
+            addFaceData();
         }
     }
+
+    const std::vector<dataArray> vectorArrays(arrays(false));
 
     writePolyData
     (
@@ -376,8 +426,10 @@ void Foam::granularVTKWriter::writeParticles
         [&](Ostream& os)
         {
             writeScalars(os, "Int32", "id", faceIds);
-            writeVectors(os, "velocity", faceU);
-            writeVectors(os, "omega", faceOmega);
+            for (label k = 0; k < nVectors; ++k)
+            {
+                writeVectors(os, vectorArrays[k + 1].name, faceVectors[k]);
+            }
         }
     );
 
@@ -397,8 +449,10 @@ void Foam::granularVTKWriter::writeParticles
         {
             writeScalars(os, "Int32", "id", sphereIds);
             writeScalars(os, "Float64", "diameter", diameters);
-            writeVectors(os, "velocity", sphereU);
-            writeVectors(os, "omega", sphereOmega);
+            for (label k = 0; k < nVectors; ++k)
+            {
+                writeVectors(os, vectorArrays[k + 1].name, sphereVectors[k]);
+            }
         }
     );
 }
@@ -408,7 +462,8 @@ void Foam::granularVTKWriter::write
 (
     const granularSystem& system,
     const scalar t,
-    const label index
+    const label index,
+    const loads& given
 )
 {
     // The folder made at the first write, not before: a run refused at
@@ -416,7 +471,7 @@ void Foam::granularVTKWriter::write
     mkDir(dir_);
     const word polyName("polyhedra_" + Foam::name(index) + ".vtp");
     const word sphereName("spheres_" + Foam::name(index) + ".vtp");
-    writeParticles(system, false, dir_/polyName, dir_/sphereName);
+    writeParticles(system, false, dir_/polyName, dir_/sphereName, given);
 
     dropFrom(polyhedra_, t);
     dropFrom(spheres_, t);
@@ -431,7 +486,8 @@ void Foam::granularVTKWriter::writePieces
 (
     const granularSystem& part,
     const scalar t,
-    const label index
+    const label index,
+    const loads& given
 )
 {
     // This rank's piece: its own particles, not its ghosts
@@ -442,7 +498,8 @@ void Foam::granularVTKWriter::writePieces
     (
         part, true,
         pieceDir/"polyhedra_" + rank + ".vtp",
-        pieceDir/"spheres_" + rank + ".vtp"
+        pieceDir/"spheres_" + rank + ".vtp",
+        given
     );
     if (!Pstream::master())
     {
@@ -455,12 +512,12 @@ void Foam::granularVTKWriter::writePieces
     writePieceIndex
     (
         dir_/polyName, pieceDir.name(), "polyhedra", "PCellData", "id",
-        polyhedraArrays
+        arrays(false)
     );
     writePieceIndex
     (
         dir_/sphereName, pieceDir.name(), "spheres", "PPointData", "diameter",
-        sphereArrays
+        arrays(true)
     );
     dropFrom(polyhedraPieces_, t);
     dropFrom(spherePieces_, t);

@@ -54,6 +54,10 @@ Foam::rigidParticle::rigidParticle
     rotationInvariant_(shape.rotationInvariant()),
     q_(q),
     R_(tensor::I),
+    Fc_(Zero),
+    Tc_(Zero),
+    Ic_(Zero),
+    Jc_(Zero),
     shape_(&shape),
     inertia_(density*shape.volumeInertia()),
     invInertia_(inv(inertia_))

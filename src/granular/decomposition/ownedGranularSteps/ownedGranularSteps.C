@@ -274,6 +274,7 @@ Foam::label Foam::ownedGranularSteps::step(const scalar Deltat)
     for (granularSystem& s : systems_)
     {
         s.resetStatistics(false);
+        s.startContactImpulses();
     }
     const bool anyMoving = exchange_.anyOf
     (
