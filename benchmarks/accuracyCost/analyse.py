@@ -1,64 +1,53 @@
-"""Tables, plot and recommendations of the accuracy-cost study from
-results.csv (called by `run --analyse`).
+"""Plot, tables and targets of the accuracy-cost study from results.csv
+(called by `run --analyse`).
 
 Writes next to results.csv:
-  accuracyCost.png    |error| against core-seconds per particle per D/U_ref,
-                      one panel per problem, one marker per sweep, one
-                      colour per surface treatment (fluidStencil; ghostCells
-                      as first written, ghostShear mirrored; the
-                      periodic-suspension tutorials' coupling, ghostShear
-                      viscous + ghostCutCells solidFraction; each also with
-                      the constraint inside two PIMPLE outer correctors), the
-                      Pareto front of each (no run of that treatment both
-                      cheaper and more accurate)
-  table.md            every run: settings, error, wall, core-seconds, memory
-  recommendations.md  the cheapest measured run within 1, 3 and 10 % per
-                      problem and treatment, and the observed orders of
-                      convergence
+  accuracyCost.png  one panel per problem: |error| against core-seconds per
+                    unit of the problem's time, one series (marker and line)
+                    per sweep: resolution, time step, refining mesh,
+                    sub-steps; each point labelled with what changed
+  table.md          every run: settings, cells, value, error, wall,
+                    core-seconds, memory, phase split
+  targets.md        per problem, the cheapest measured run within 10, 5 and
+                    2 % (its D/dx, mesh, time step and core-hours per unit
+                    of time), and the observed orders of convergence
+With --documents (run --analyse --documents) it also writes targets.md's
+table into doc/07-accuracy-and-cost.md, between the lines
+<!-- accuracyCost: targets --> and <!-- accuracyCost: end -->.
 """
 import csv
+import glob
 import math
 import os
 import sys
 
 PROBLEMS = {
-    "fixedSphere": "fixed sphere, Re = 100: C_D against Clift et al.",
-    "terminalRe": "settling sphere, Ga = 70, m = 2: Re_t against 71.36",
-    "tenCateE2": "ten Cate E2: u_max against 0.05718 m/s",
-    "tenCateE2bounce": "E2's bounce on the floor: rebound height against 80 sub-steps",
+    "fixedSphereRe20": "fixed sphere, Re 20: C_D",
+    "fixedSphereRe100": "fixed sphere, Re 100: C_D",
+    "fixedCubeRe100": "fixed cube (face on), Re 100: C_D",
+    "terminalRe": "settling sphere, Ga 70, m 2: Re_t",
+    "tenCateE2": "ten Cate E2: u_max",
+    "frozenCubeArray": "frozen cube array, phi 0.2, Re 20: F",
+    "cubeSuspension": "cube suspension, phi 0.2, Ga 70: Re",
+    "tenCateE2bounce": "E2's bounce: rebound (against 80 sub-steps)",
 }
-TUTORIAL = "ghostCells+ghostShearviscous+ghostCutCellssolidFraction"
-TREATMENTS = {"fluidStencil": "tab:blue",
-              # ghost cells as first written (ghostShear mirrored: fluid through
-              # the bodies, found 2026-12-02)
-              "ghostCells": "tab:red",
-              # the constraint after each of 2 PIMPLE outer correctors (--outer 2)
-              "ghostCells+nOuterCorrectors2": "tab:green",
-              # the periodic-suspension tutorials' coupling (after the fix)
-              TUTORIAL: "tab:purple",
-              TUTORIAL + "+nOuterCorrectors2": "tab:orange"}
-# How the legend names them
-LABELS = {"ghostCells": "ghostCells (mirrored, before)",
-          "ghostCells+nOuterCorrectors2": "ghostCells (mirrored) + 2 outer correctors",
-          TUTORIAL: "tutorials' coupling (viscous + solidFraction)",
-          TUTORIAL + "+nOuterCorrectors2": "tutorials' coupling + 2 outer correctors"}
-MARKERS = {"resolution": "o", "time step": "s", "tolerance": "^", "surface points": "D",
-           "sub-steps": "v"}
+SERIES = {"resolution": ("o", "tab:blue"), "time step": ("s", "tab:orange"),
+          "refining mesh": ("^", "tab:green"), "sub-steps": ("v", "tab:purple")}
+TARGETS = (10, 5, 2)
+NUMBERS = ("levels", "resolution", "cfl", "subSteps", "cells", "dt", "time_units", "value",
+           "reference", "error_percent", "wall_s", "core_s", "peak_rss_MiB",
+           "core_s_per_time_unit", "overlap_D", "fluid_s", "dlmfd_s", "granular_s")
 
 
 def load(path):
-    rows = [r for r in csv.DictReader(open(path))]
+    rows = list(csv.DictReader(open(path)))
     for r in rows:
-        r["treatment"] = r.get("treatment") or "fluidStencil"
-        for k in ("resolution", "cfl", "tolerance", "spacing", "subSteps", "cells", "dt",
-                  "time_units", "value", "reference", "error_percent", "wall_s", "core_s",
-                  "peak_rss_MiB", "core_s_per_time_unit", "overlap_D", "granular_s",
-                  "fluid_s", "dlmfd_s"):
+        for k in NUMBERS:
             try:
                 r[k] = float(r[k])
             except (KeyError, TypeError, ValueError):
                 r[k] = None
-    # The bounce: error against the run with the most sub-steps
+    # The bounce: its error against the run with the most sub-steps
     bounce = [r for r in rows if r["problem"] == "tenCateE2bounce" and r["value"] is not None]
     if bounce:
         ref = max(bounce, key=lambda r: r["subSteps"])
@@ -68,26 +57,114 @@ def load(path):
     return rows
 
 
-def measured(rows, problem, treatment=None):
+def measured(rows, problem):
     return [r for r in rows if r["problem"] == problem and r["core_s"] is not None
-            and r["error_percent"] is not None
-            and (treatment is None or r["treatment"] == treatment)]
+            and r["error_percent"] is not None]
 
 
-def pareto(rs):
-    """Runs that no other run beats in both cost and |error|"""
-    front = []
-    for r in sorted(rs, key=lambda r: (r["core_s_per_time_unit"], abs(r["error_percent"]))):
-        if not front or abs(r["error_percent"]) < abs(front[-1]["error_percent"]):
-            front.append(r)
-    return front
+def step_label(r):
+    """The time step as the study set it"""
+    if r["problem"] == "cubeSuspension":
+        return f"t_g/{r['cfl']:g}"
+    return f"CFL {r['cfl']:g}"
 
 
-def settings(r):
-    if r["treatment"].startswith("ghostCells"):
-        return f"{r['treatment']}, D/dx {r['resolution']:g}, CFL {r['cfl']:g}, sub-steps {r['subSteps']:g}"
-    return (f"fluidStencil, D/dx {r['resolution']:g}, CFL {r['cfl']:g}, tol {r['tolerance']:g}, "
-            f"spacing {r['spacing']:g}, sub-steps {r['subSteps']:g}")
+def point_label(r):
+    if r["sweep"] == "time step":
+        return step_label(r)
+    if r["sweep"] == "sub-steps":
+        return f"{r['subSteps']:g}"
+    return f"{r['resolution']:g}"
+
+
+def mesh_label(r):
+    if r["mesh"] == "adaptive":
+        return f"refining ({r['levels']:g} levels)"
+    if r["mesh"] == "refineHexMesh":
+        return "split once around the body"
+    return r["mesh"]
+
+
+def plot(rows, png):
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        import matplotlib.ticker
+    except ImportError:
+        sys.exit("analyse.py: matplotlib is missing (etc/debianPackages: python3-matplotlib)")
+    probs = [p for p in PROBLEMS if measured(rows, p)]
+    if not probs:
+        sys.exit("analyse.py: no measured run in results.csv")
+    ncol = min(4, len(probs))
+    nrow = math.ceil(len(probs) / ncol)
+    fig, axes = plt.subplots(nrow, ncol, figsize=(4.0 * ncol, 3.6 * nrow), squeeze=False)
+    for ax in axes.flat[len(probs):]:
+        ax.axis("off")
+    for ax, p in zip(axes.flat, probs):
+        rs = measured(rows, p)
+        unit = rs[0].get("time_unit") or "unit"
+        for sweep, (mk, colour) in SERIES.items():
+            pts = [r for r in rs if r["sweep"] == sweep]
+            if sweep in ("resolution", "time step", "sub-steps"):
+                # The base run belongs to every series around it
+                base = [r for r in rs if r["sweep"] == "resolution"]
+                if sweep == "time step" and pts:
+                    N = pts[0]["resolution"]
+                    pts += [r for r in base if r["resolution"] == N and r["mesh"] == pts[0]["mesh"]]
+            if not pts:
+                continue
+            key = (lambda r: r["cfl"]) if sweep == "time step" else \
+                (lambda r: r["subSteps"]) if sweep == "sub-steps" else (lambda r: r["resolution"])
+            pts = sorted({point_label(r) if sweep != "time step" else step_label(r): r
+                          for r in pts}.values(), key=key)
+            xs = [r["core_s_per_time_unit"] for r in pts]
+            ys = [max(abs(r["error_percent"]), 1e-3) for r in pts]
+            label = {"resolution": "resolution D/dx", "time step": "time step",
+                     "refining mesh": "refining mesh, D/dx finest", "sub-steps": "sub-steps per contact"}[sweep]
+            ax.plot(xs, ys, "-" + mk, color=colour, mfc="none", lw=0.8, label=label)
+            for r, x, y in zip(pts, xs, ys):
+                if sweep == "time step" and r["sweep"] != "time step":
+                    continue    # the base, labelled in its own series
+                ax.annotate(step_label(r) if sweep == "time step" else point_label(r), (x, y),
+                            textcoords="offset points", xytext=(4, 3), fontsize=6, color=colour)
+        for lvl in TARGETS:
+            ax.axhline(lvl, color="0.85", lw=0.6, zorder=0)
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        plain = matplotlib.ticker.FormatStrFormatter("%g")
+        ax.yaxis.set_major_formatter(plain)
+        ax.yaxis.set_minor_formatter(plain)
+        ax.set_xlabel(f"core-seconds per {unit}", fontsize=8)
+        ax.set_ylabel("|error| [%]", fontsize=8)
+        ax.tick_params(labelsize=7)
+        ax.set_title(PROBLEMS[p], fontsize=8)
+        ax.legend(fontsize=6, loc="best")
+    fig.suptitle("dlmfdFoam (ghost cells, ghostShear link): error against cost, serial runs on one core",
+                 fontsize=9)
+    fig.tight_layout()
+    fig.savefig(png, dpi=110)
+
+
+def table(rows, md):
+    with open(md, "w") as f:
+        f.write("| problem | sweep | mesh | D/dx | time step | sub-steps | cells | value | error [%] |"
+                " wall [s] | core-s | core-s per time unit | peak RSS [MiB] | fluid / DLM/FD / granular [s] |"
+                " note |\n")
+        f.write("|" + "---|" * 15 + "\n")
+        for r in sorted(rows, key=lambda r: (list(PROBLEMS).index(r["problem"]), r["sweep"],
+                                             r["resolution"] or 0, r["cfl"] or 0, r["subSteps"] or 0)):
+            def g(k, fmt="{:g}"):
+                return "" if r.get(k) is None else fmt.format(r[k])
+            split = "" if r.get("fluid_s") is None else \
+                f"{r['fluid_s']:.0f} / {r['dlmfd_s']:.0f} / {r['granular_s']:.1f}"
+            f.write(f"| {r['problem']} | {r['sweep']} | {mesh_label(r)} | {g('resolution')} |"
+                    f" {step_label(r) if r.get('cfl') is not None else ''} | {g('subSteps')} |"
+                    f" {g('cells', '{:.0f}')} | {g('value', '{:.5g}')} |"
+                    f" {g('error_percent', '{:+.2f}')} | {g('wall_s', '{:.0f}')} |"
+                    f" {g('core_s', '{:.0f}')} | {g('core_s_per_time_unit', '{:.3g}')}"
+                    f" per {r.get('time_unit') or ''} |"
+                    f" {g('peak_rss_MiB', '{:.0f}')} | {split} | {r.get('note') or ''} |\n")
 
 
 def order(points):
@@ -101,120 +178,82 @@ def order(points):
     return sum((x - mx) * (y - my) for x, y in pts) / sxx if sxx else None
 
 
-def orders(rows):
-    out = []
-    for p, t in ((p, t) for p in ("fixedSphere", "terminalRe", "tenCateE2") for t in TREATMENTS):
-        rs = measured(rows, p, t)
-        res = [r for r in rs if r["sweep"] == "resolution"]
-        if len(res) >= 2:
-            # Error against the reference, h = 1/N
-            s = order([(1 / r["resolution"], r["error_percent"]) for r in res])
-            out.append((p, t, "space", s, len(res),
-                        ", ".join(f"D/dx {r['resolution']:g}: {r['error_percent']:+.2f} %"
-                                  for r in sorted(res, key=lambda r: r["resolution"]))))
-        steps = [r for r in rs if r["sweep"] == "time step"]
-        if not steps:
+def targets_table(rows):
+    """The cheapest measured run within each target, per problem"""
+    lines = ["| case | target | cheapest measured run within it: D/dx, mesh, time step | its error [%] |"
+             " core-hours per unit of time |", "|---|---|---|---|---|"]
+    for p in PROBLEMS:
+        if p == "tenCateE2bounce":
             continue
-        # The time-step sweep and the base run it varies (same resolution,
-        # tolerance, spacing)
-        ts = [r for r in rs if r["resolution"] == steps[0]["resolution"]
-              and r["tolerance"] == steps[0]["tolerance"] and r["spacing"] == steps[0]["spacing"]]
-        ts = sorted({r["cfl"]: r for r in ts}.values(), key=lambda r: r["cfl"])
-        if len(ts) >= 3:
-            # Differences from the smallest step: the time error alone
-            finest = ts[0]
-            s = order([(r["cfl"], r["value"] - finest["value"]) for r in ts[1:]])
-            out.append((p, t, "time", s, len(ts),
-                        ", ".join(f"CFL {r['cfl']:g}: {r['error_percent']:+.2f} %" for r in ts)))
-    return out
+        rs = measured(rows, p)
+        if not rs:
+            continue
+        unit = rs[0].get("time_unit") or ""
+        for lvl in TARGETS:
+            ok = [r for r in rs if abs(r["error_percent"]) <= lvl]
+            if ok:
+                r = min(ok, key=lambda r: r["core_s_per_time_unit"])
+                lines.append(f"| {PROBLEMS[p]} | {lvl} % | D/dx {r['resolution']:g}, {mesh_label(r)},"
+                             f" {step_label(r)} | {r['error_percent']:+.1f} |"
+                             f" {r['core_s_per_time_unit'] / 3600:.2g} per {unit} |")
+            else:
+                best = min(rs, key=lambda r: abs(r["error_percent"]))
+                lines.append(f"| {PROBLEMS[p]} | {lvl} % | not reached by the runs made (closest:"
+                             f" {best['error_percent']:+.1f} % at D/dx {best['resolution']:g},"
+                             f" {step_label(best)}) | | |")
+    return "\n".join(lines) + "\n"
 
 
-def plot(rows, png):
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
-        sys.exit("analyse.py: matplotlib is missing (etc/debianPackages: python3-matplotlib)")
-    probs = [p for p in PROBLEMS if measured(rows, p)]
-    fig, axes = plt.subplots(1, len(probs), figsize=(4.2 * len(probs), 3.8), squeeze=False)
-    for ax, p in zip(axes[0], probs):
-        for t, colour in TREATMENTS.items():
-            rs = measured(rows, p, t)
-            if not rs:
-                continue
-            for sweep, mk in MARKERS.items():
-                pts = [r for r in rs if r["sweep"] == sweep]
-                if pts:
-                    ax.plot([r["core_s_per_time_unit"] for r in pts],
-                            [max(abs(r["error_percent"]), 1e-3) for r in pts], mk, mfc="none",
-                            color=colour, label=f"{LABELS.get(t, t)}: {sweep}")
-            front = pareto(rs)
-            ax.plot([r["core_s_per_time_unit"] for r in front],
-                    [max(abs(r["error_percent"]), 1e-3) for r in front], "-", color=colour,
-                    lw=0.8, label=f"{LABELS.get(t, t)}: Pareto front")
-        for lvl in (1, 3, 10):
-            ax.axhline(lvl, color="0.8", lw=0.6, zorder=0)
-        ax.set_xscale("log")
-        ax.set_yscale("log")
-        ax.set_xlabel("core-seconds per particle per D/U_ref")
-        ax.set_ylabel("|error| [%]")
-        ax.set_title(PROBLEMS[p], fontsize=8)
-        ax.legend(fontsize=5)
-    fig.tight_layout()
-    fig.savefig(png, dpi=100)
+def orders_table(rows):
+    lines = ["| case | series | observed order | errors |", "|---|---|---|---|"]
+    for p in PROBLEMS:
+        rs = measured(rows, p)
+        res = sorted((r for r in rs if r["sweep"] == "resolution"), key=lambda r: r["resolution"])
+        if len(res) >= 2:
+            s = order([(1 / r["resolution"], r["error_percent"]) for r in res])
+            lines.append(f"| {p} | resolution | {'' if s is None else f'{s:.2f}'} | "
+                         + ", ".join(f"D/dx {r['resolution']:g}: {r['error_percent']:+.2f} %" for r in res)
+                         + " |")
+        steps = [r for r in rs if r["sweep"] == "time step"]
+        if steps:
+            N, mesh = steps[0]["resolution"], steps[0]["mesh"]
+            ts = steps + [r for r in res if r["resolution"] == N and r["mesh"] == mesh]
+            key = (lambda r: -r["cfl"]) if p == "cubeSuspension" else (lambda r: r["cfl"])
+            ts = sorted(ts, key=key)
+            s = None
+            if len(ts) >= 3:
+                finest = ts[0]
+                h = (lambda r: 1 / r["cfl"]) if p == "cubeSuspension" else (lambda r: r["cfl"])
+                s = order([(h(r), r["value"] - finest["value"]) for r in ts[1:]])
+            lines.append(f"| {p} | time step (differences from the smallest) | {'' if s is None else f'{s:.2f}'} | "
+                         + ", ".join(f"{step_label(r)}: {r['error_percent']:+.2f} %" for r in ts) + " |")
+    return "\n".join(lines) + "\n"
 
 
-def table(rows, md):
-    with open(md, "w") as f:
-        f.write("| problem | treatment | sweep | D/dx | CFL | tolerance | spacing | sub-steps | cells | value |"
-                " error [%] | wall [s] | core-s | core-s per D/U_ref | peak RSS [MiB] |"
-                " granular [s] | note |\n")
-        f.write("|" + "---|" * 17 + "\n")
-        for r in sorted(rows, key=lambda r: (list(PROBLEMS).index(r["problem"]), r["treatment"],
-                                             r["sweep"],
-                                             r["resolution"] or 0, r["cfl"] or 0,
-                                             r["tolerance"] or 0, r["spacing"] or 0,
-                                             r["subSteps"] or 0)):
-            g = lambda k, fmt="{:g}": "" if r.get(k) is None else fmt.format(r[k])
-            f.write(f"| {r['problem']} | {r['treatment']} | {r['sweep']} | {g('resolution')} | {g('cfl')} |"
-                    f" {g('tolerance')} | {g('spacing')} | {g('subSteps')} |"
-                    f" {g('cells', '{:.0f}')} | {g('value', '{:.5g}')} |"
-                    f" {g('error_percent', '{:+.2f}')} | {g('wall_s', '{:.0f}')} |"
-                    f" {g('core_s', '{:.0f}')} | {g('core_s_per_time_unit', '{:.3g}')} |"
-                    f" {g('peak_rss_MiB', '{:.0f}')} | {g('granular_s', '{:.3g}')} |"
-                    f" {r.get('note') or ''} |\n")
+def write_documents(targets, root):
+    begin, end = "<!-- accuracyCost: targets -->", "<!-- accuracyCost: end -->"
+    for path in glob.glob(os.path.join(root, "doc", "07-*.md")):
+        text = open(path).read()
+        if begin not in text or end not in text:
+            sys.exit(f"{path}: no {begin} ... {end} block for the targets table")
+        head, rest = text.split(begin, 1)
+        _, tail = rest.split(end, 1)
+        new = head + begin + "\n" + targets + end + tail
+        if new != text:
+            tmp = path + ".tmp"
+            open(tmp, "w").write(new)
+            os.replace(tmp, path)
+            print("wrote the targets into", os.path.relpath(path, root))
 
 
-def recommendations(rows, md):
-    with open(md, "w") as f:
-        f.write("| problem | target | cheapest measured run within it | error [%] |"
-                " core-s per particle per D/U_ref | peak RSS [MiB] |\n|---|---|---|---|---|---|\n")
-        for p, t in ((p, t) for p in ("fixedSphere", "terminalRe", "tenCateE2") for t in TREATMENTS):
-            rs = measured(rows, p, t)
-            if not rs:
-                continue
-            for lvl in (1, 3, 10):
-                ok = [r for r in rs if abs(r["error_percent"]) <= lvl]
-                if ok:
-                    r = min(ok, key=lambda r: r["core_s_per_time_unit"])
-                    f.write(f"| {p} | {lvl} % | {settings(r)} | {r['error_percent']:+.2f} |"
-                            f" {r['core_s_per_time_unit']:.3g} | {r['peak_rss_MiB']:.0f} |\n")
-                else:
-                    best = min(rs, key=lambda r: abs(r["error_percent"]), default=None)
-                    f.write(f"| {p} | {lvl} % | none measured (best "
-                            f"{best['error_percent']:+.2f} % at {settings(best)}) | | | |\n"
-                            if best else f"| {p} | {lvl} % | no run | | | |\n")
-        f.write("\n| problem | treatment | order in | observed order | runs | errors |\n"
-                "|---|---|---|---|---|---|\n")
-        for p, t, kind, s, n, detail in orders(rows):
-            f.write(f"| {p} | {t} | {kind} | {'' if s is None else f'{s:.2f}'} | {n} | {detail} |\n")
-
-
-def main(path):
+def main(path, documents=False):
     here = os.path.dirname(path)
     rows = load(path)
     plot(rows, os.path.join(here, "accuracyCost.png"))
     table(rows, os.path.join(here, "table.md"))
-    recommendations(rows, os.path.join(here, "recommendations.md"))
-    print(open(os.path.join(here, "recommendations.md")).read())
+    targets = targets_table(rows)
+    with open(os.path.join(here, "targets.md"), "w") as f:
+        f.write(targets + "\n" + orders_table(rows))
+    print(open(os.path.join(here, "targets.md")).read())
+    if documents:
+        write_documents(targets, os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
