@@ -288,57 +288,14 @@ void Foam::dlmfdCoupling::broadcastState()
 }
 
 
-// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
-
-Foam::dlmfdCoupling::dlmfdCoupling
-(
-    const fvMesh& mesh,
-    const sceneEffects& effects
-)
-:
-    mesh_(mesh),
-    properties_(constantDict(mesh, "dlmfdProperties")),
-    rhoFluid_
-    (
-        granularInput::positive
-        (
-            properties_, "fluidDensity", "dlmfdProperties", dimDensity
-        )
-    ),
-    g_(Zero),
-    granular_
-    (
-        IOdictionary(constantDict(mesh, "particleProperties")),
-        IOdictionary(constantDict(mesh, "collisionProperties")),
-        effects
-    ),
-    fresh_(),
-    whole_(),
-    nParticles_(0),
-    part_(),
-    boxes_(),
-    exchange_(),
-    owned_(),
-    fd_
-    (
-        mesh,
-        properties_.optionalSubDict("fictitiousDomain")
-    ),
-    ddt_(),
-    Fh_(),
-    Th_(),
-    series_(),
-    seriesInterval_(properties_.getOrDefault<label>("seriesInterval", 1)),
-    vtk_(mesh.time().globalPath()/"VTK", mesh.time().value(), true),
-    costs_(),
-    outer_()
+void Foam::dlmfdCoupling::checkSettings() const
 {
     // A misspelt optional keyword would leave its default in force (the
     // file of the case's constant/ folder: in parallel the dictionary is
     // the master's reading, with no file name)
     const fileName propertiesFile
     (
-        mesh.time().globalPath()/mesh.time().constant()/"dlmfdProperties"
+        mesh_.time().globalPath()/mesh_.time().constant()/"dlmfdProperties"
     );
     knownKeywords::require
     (
@@ -363,7 +320,7 @@ Foam::dlmfdCoupling::dlmfdCoupling
     // loop (a free sphere's total momentum moved 0.09 % in 25 steps with
     // three outer correctors, 0.002 % with one: case.momentumIsConserved*)
     const label nOuter =
-        mesh.solutionDict().optionalSubDict("PIMPLE")
+        mesh_.solutionDict().optionalSubDict("PIMPLE")
        .getOrDefault<label>("nOuterCorrectors", 1);
     const string refusal(fd_.treatment().outerCorrectorsRefusal());
     if (!refusal.empty() && nOuter > 1)
@@ -373,55 +330,20 @@ Foam::dlmfdCoupling::dlmfdCoupling
             << " is not allowed with " << propertiesFile
             << " fictitiousDomain/" << refusal.c_str() << exit(FatalError);
     }
+}
 
-    // Walls from the mesh's planar patches, where asked for
-    granular_.addWallPatches(mesh);
 
-    // Gravity (effect gravity: constant/g) acts in the predictor (the
-    // fluid carries its own weight in the pressure): the granular
-    // corrector has the contacts only
-    g_ = granular_.readGravity(mesh);
-    Info<< "Gravity " << g_ << " m/s^2" << nl;
-    granular_.setGravity(Zero);
-
-    // Periodic directions, as the mesh's cyclics and the domain say
-    setPeriodicity();
-
-    // With owned particles the master alone reads the scene, into whole_,
-    // and hands each rank its own particles and those near it (setOwned)
-    if (granular_.ownedDistribution())
-    {
-        whole_ = sceneWithoutParticles(effects);
-    }
-    const fileName particleFile
-    (
-        whole_.valid()
-      ? readParticles(*whole_, true)
-      : readParticles(granular_)
-    );
-    nParticles_ = returnReduce(scene().size(), maxOp<label>());
-    checkPlanarParticles(particleFile);
-    if (whole_.valid())
-    {
-        setOwned(effects);
-    }
-
-    // The multipliers' force density (and the ghost cells' deviations)
-    // belong with the particles the solver wrote at this time: with
-    // particles placed anew (\<time\>/particles, not uniform/particles)
-    // they would hold bodies where there are none (issue 20, finding e)
-    if (particleFile.name() == "particles" && particleFile.path().name() != "uniform")
-    {
-        fd_.discardStoredState(particleFile);
-    }
-    Fh_.setSize(nParticles_, Zero);
-    Th_.setSize(nParticles_, Zero);
-
-    // The scales of seed 001 for each particle, when the fluid is
-    // Newtonian: u_g = sqrt(|m - 1| g D), t_g = D/u_g, Ga = u_g D/nu
+void Foam::dlmfdCoupling::reportScene(const fileName& particleFile) const
+{
+    // The scales of Seyed-Ahmadi & Wachs (2021) for each particle, when
+    // the fluid is Newtonian: u_g = sqrt(|m - 1| g D), t_g = D/u_g,
+    // Ga = u_g D/nu
     scalar nu = -1;
     {
-        const IOdictionary transport(constantDict(mesh, "transportProperties"));
+        const IOdictionary transport
+        (
+            constantDict(mesh_, "transportProperties")
+        );
         if (transport.get<word>("transportModel") == "Newtonian")
         {
             nu = dimensionedScalar("nu", dimViscosity, transport).value();
@@ -468,7 +390,11 @@ Foam::dlmfdCoupling::dlmfdCoupling
         << nl;
     all.effects().report(Info);
     Info<< endl;
+}
 
+
+void Foam::dlmfdCoupling::openSeries()
+{
     // The time series: the master's whole scene, or with owned particles
     // on several ranks each rank's own particles in its processor folder,
     // each row led by the time index and the particle's global index (what
@@ -477,8 +403,8 @@ Foam::dlmfdCoupling::dlmfdCoupling
     {
         const fileName dir
         (
-            (seriesPerRank() ? mesh.time().path() : mesh.time().globalPath())
-           /"postProcessing"/"dlmfdParticles"/mesh.time().timeName()
+            (seriesPerRank() ? mesh_.time().path() : mesh_.time().globalPath())
+           /"postProcessing"/"dlmfdParticles"/mesh_.time().timeName()
         );
         mkDir(dir);
         series_.reset(new OFstream(dir/"particles.dat"));
@@ -489,6 +415,102 @@ Foam::dlmfdCoupling::dlmfdCoupling
             << " Fhx Fhy Fhz Thx Thy Thz Fcx Fcy Fcz Tcx Tcy Tcz"
             << "  (SI units, world frame)" << nl;
     }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::dlmfdCoupling::dlmfdCoupling
+(
+    const fvMesh& mesh,
+    const sceneEffects& effects
+)
+:
+    mesh_(mesh),
+    properties_(constantDict(mesh, "dlmfdProperties")),
+    rhoFluid_
+    (
+        granularInput::positive
+        (
+            properties_, "fluidDensity", "dlmfdProperties", dimDensity
+        )
+    ),
+    g_(Zero),
+    granular_
+    (
+        IOdictionary(constantDict(mesh, "particleProperties")),
+        IOdictionary(constantDict(mesh, "collisionProperties")),
+        effects
+    ),
+    fresh_(),
+    whole_(),
+    nParticles_(0),
+    part_(),
+    boxes_(),
+    exchange_(),
+    owned_(),
+    fd_
+    (
+        mesh,
+        properties_.optionalSubDict("fictitiousDomain")
+    ),
+    ddt_(),
+    Fh_(),
+    Th_(),
+    series_(),
+    seriesInterval_(properties_.getOrDefault<label>("seriesInterval", 1)),
+    vtk_(mesh.time().globalPath()/"VTK", mesh.time().value(), true),
+    costs_(),
+    outer_()
+{
+    checkSettings();
+
+    // Walls from the mesh's planar patches, where asked for
+    granular_.addWallPatches(mesh);
+
+    // Gravity (effect gravity: constant/g) acts in the predictor (the
+    // fluid carries its own weight in the pressure): the granular
+    // corrector has the contacts only
+    g_ = granular_.readGravity(mesh);
+    Info<< "Gravity " << g_ << " m/s^2" << nl;
+    granular_.setGravity(Zero);
+
+    // Periodic directions, as the mesh's cyclics and the domain say
+    setPeriodicity();
+
+    // With owned particles the master alone reads the scene, into whole_,
+    // and hands each rank its own particles and those near it (setOwned)
+    if (granular_.ownedDistribution())
+    {
+        whole_ = sceneWithoutParticles(effects);
+    }
+    const fileName particleFile
+    (
+        whole_.valid()
+      ? readParticles(*whole_, true)
+      : readParticles(granular_)
+    );
+    nParticles_ = returnReduce(scene().size(), maxOp<label>());
+    checkPlanarParticles(particleFile);
+    if (whole_.valid())
+    {
+        setOwned(effects);
+    }
+
+    // The multipliers' force density (and the ghost cells' deviations)
+    // belong with the particles the solver wrote at this time: with
+    // particles placed anew (\<time\>/particles, not uniform/particles)
+    // they would hold bodies where there are none (issue 20, finding e)
+    if (particleFile.name() == "particles" && particleFile.path().name() != "uniform")
+    {
+        fd_.discardStoredState(particleFile);
+    }
+    Fh_.setSize(nParticles_, Zero);
+    Th_.setSize(nParticles_, Zero);
+
+    reportScene(particleFile);
+
+    openSeries();
     if (mesh.time().timeIndex() == 0)
     {
         writeVTK();

@@ -255,54 +255,46 @@ void Foam::dlmfdCoupling::correct(volVectorField& U)
 }
 
 
-void Foam::dlmfdCoupling::evolve(volVectorField& U)
+void Foam::dlmfdCoupling::payFluidGain
+(
+    const volVectorField& U,
+    const List<fictitiousDomain::body>& bodies,
+    const UList<fictitiousDomain::body>& solved
+)
+{
+    surfaceTreatment& treatment = fd_.treatment();
+    if (!treatment.hasFluidGain())
+    {
+        return;
+    }
+    // What the fluid gained from the bodies in its step (the wall links),
+    // the bodies pay; with owned particles among the holders of each body
+    List<vector> gain(bodies.size(), Zero);
+    List<vector> gainMoment(bodies.size(), Zero);
+    treatment.fluidGain
+    (
+        U, mesh_.time().deltaTValue(), ddtCoeff(U), fd_, solved,
+        bool(owned_), nParticles_, gain, gainMoment
+    );
+    fd_.addOwed(bodies, gain, gainMoment);
+}
+
+
+void Foam::dlmfdCoupling::takeResults
+(
+    const List<fictitiousDomain::body>& bodies,
+    const UList<fictitiousDomain::body>& solved,
+    const List<fictitiousDomain::result>& res,
+    const vectorField& V0,
+    const vectorField& omega0,
+    List<vector>& V3s,
+    List<vector>& omega3s,
+    stepReport& report
+)
 {
     const scalar dt = mesh_.time().deltaTValue();
-    clockTime clock;
-
-    // (2) Granular predictor and the bodies of the constraint
-    vectorField V0, omega0;
-    const List<fictitiousDomain::body> bodies(predictedBodies(V0, omega0));
-    List<fictitiousDomain::body> held;
-    const UList<fictitiousDomain::body>& solved = bodiesHeld(bodies, held);
-    if (outer_.correctedIndex == mesh_.time().timeIndex())
-    {
-        // The outer correctors solved this step already: from its start
-        fd_.rewindToStepStart();
-    }
-
-    // (3) Fictitious domain, distributed; its results on the master
-    surfaceTreatment& treatment = fd_.treatment();
-    if (treatment.hasFluidGain())
-    {
-        // What the fluid gained from the bodies in its step (the wall
-        // links), the bodies pay; with owned particles among the holders
-        // of each body
-        List<vector> gain(bodies.size(), Zero);
-        List<vector> gainMoment(bodies.size(), Zero);
-        treatment.fluidGain
-        (
-            U, dt, ddtCoeff(U), fd_, solved, bool(owned_), nParticles_, gain,
-            gainMoment
-        );
-        fd_.addOwed(bodies, gain, gainMoment);
-    }
-    const scalar commBefore = fd_.communicationSeconds();
-    const List<fictitiousDomain::result>& res = fd_.solve(U, solved, dt);
-    const scalar fdComm = fd_.communicationSeconds() - commBefore;
-    costs_.fdSeconds += clock.timeIncrement() - fdComm;
-    costs_.commSeconds += fdComm;
-
-    // (4) On the master, or with owned particles on each body's owner:
-    // forces, torques and the granular corrector, contacts from X^n over
-    // dt
-    label nPoints = 0, nSurface = 0, nDropped = 0, nSub = 0;
-    scalar maxError = 0;
-    const bool corrected = outer_.correctedIndex == mesh_.time().timeIndex();
-    scalar lastChange = 0;
     // (by place in bodies, as V0)
     const bodyPlaces places(bodies);
-    List<vector> V3s, omega3s;
     if (owned_)
     {
         V3s.setSize(bodies.size());
@@ -318,16 +310,17 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
         const label i = bodyPlaces::global(solved, k);
         const label place = places(i);
         const fictitiousDomain::result& r = res[k];
-        nPoints += r.nInterior + r.nSurface;
-        nSurface += r.nSurface;
-        nDropped += r.nSurfaceDropped;
-        maxError = max(maxError, r.constraintError);
+        report.nPoints += r.nInterior + r.nSurface;
+        report.nSurface += r.nSurface;
+        report.nDropped += r.nSurfaceDropped;
+        report.maxError = max(report.maxError, r.constraintError);
 
         const vector V3 = b.V + r.dV;
         const vector omega3 = b.omega + r.dOmega;
-        if (corrected)
+        if (report.corrected)
         {
-            lastChange = max(lastChange, mag(V3 - outer_.lastV[place]));
+            report.lastChange =
+                max(report.lastChange, mag(V3 - outer_.lastV[place]));
         }
         const scalar vp = b.shape->volume();
         Fh_[i] = rhoFluid_*(vp*(V3 - V0[place])/dt - r.sumLambda);
@@ -348,37 +341,56 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
             p.setOmega(omega3);
         }
     }
-    if (!owned_ && Pstream::master())
+}
+
+
+void Foam::dlmfdCoupling::granularCorrector
+(
+    const List<fictitiousDomain::body>& bodies,
+    List<vector>& V3s,
+    List<vector>& omega3s,
+    stepReport& report,
+    clockTime& clock
+)
+{
+    if (!owned_)
     {
-        nSub = granular_.evolve(dt);
-        granular_.checkHealth(mesh_.time().value());
-    }
-    if (owned_)
-    {
-        // The log's sums and extremes over the owners, on the master that
-        // prints them (integers and maxima: the master-side step's numbers
-        // exactly)
-        labelList counts({nPoints, nSurface, nDropped});
-        Pstream::listCombineGather(counts, plusEqOp<label>());
-        scalarList extremes({maxError, lastChange});
-        Pstream::listCombineGather(extremes, maxEqOp<scalar>());
-        nPoints = counts[0];
-        nSurface = counts[1];
-        nDropped = counts[2];
-        maxError = extremes[0];
-        lastChange = extremes[1];
-        nSub = evolveOwned(bodies, V3s, omega3s);
-        costs_.granularSeconds += clock.timeIncrement();
-    }
-    else
-    {
+        if (Pstream::master())
+        {
+            report.nSub = granular_.evolve(mesh_.time().deltaTValue());
+            granular_.checkHealth(mesh_.time().value());
+        }
         costs_.granularSeconds += clock.timeIncrement();
 
         // The new state to every rank
         broadcastState();
         costs_.commSeconds += clock.timeIncrement();
+        return;
     }
+    // The log's sums and extremes over the owners, on the master that
+    // prints them (integers and maxima: the master-side step's numbers
+    // exactly)
+    labelList counts({report.nPoints, report.nSurface, report.nDropped});
+    Pstream::listCombineGather(counts, plusEqOp<label>());
+    scalarList extremes({report.maxError, report.lastChange});
+    Pstream::listCombineGather(extremes, maxEqOp<scalar>());
+    report.nPoints = counts[0];
+    report.nSurface = counts[1];
+    report.nDropped = counts[2];
+    report.maxError = extremes[0];
+    report.lastChange = extremes[1];
+    report.nSub = evolveOwned(bodies, V3s, omega3s);
+    costs_.granularSeconds += clock.timeIncrement();
+}
 
+
+void Foam::dlmfdCoupling::carryInteriorFluid
+(
+    volVectorField& U,
+    const UList<fictitiousDomain::body>& solved,
+    const List<fictitiousDomain::result>& res
+) const
+{
     // The fluid carried by each free particle moves with it: its interior
     // cells, at their centres relative to the body at X*, which moved by
     // X^{n+1} - X* (less than half a period, however it was wrapped)
@@ -417,25 +429,30 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
         }
     }
     U.correctBoundaryConditions();
-    costs_.fdSeconds += clock.timeIncrement();
+}
 
+
+void Foam::dlmfdCoupling::logStep(const stepReport& report) const
+{
     const granularSystem::statistics s =
         owned_ ? owned_->stats() : granular_.stats();
-    Info<< "DLM/FD: " << nParticles_ << " particles, " << nPoints << " points";
+    Info<< "DLM/FD: " << nParticles_ << " particles, " << report.nPoints
+        << " points";
     // Only a treatment that reads the fluid near the surface fits it
-    Info<< " (" << nSurface << " ghost cells";
+    Info<< " (" << report.nSurface << " ghost cells";
     if (fd_.treatment().readsFluidNearSurface())
     {
-        Info<< ", " << nDropped << " of them with no fluid cell in reach";
+        Info<< ", " << report.nDropped
+            << " of them with no fluid cell in reach";
     }
-    Info<< "), momentum balance " << maxError << " m/s";
-    if (corrected)
+    Info<< "), momentum balance " << report.maxError << " m/s";
+    if (report.corrected)
     {
         Info<< "; the last of " << outer_.nCorrections + 1 << " outer"
             << " correctors changed the particle velocities by at most "
-            << lastChange << " m/s";
+            << report.lastChange << " m/s";
     }
-    Info<< "; granular " << nSub << " sub-steps";
+    Info<< "; granular " << report.nSub << " sub-steps";
     if (s.nInReach >= 0)
     {
         Info<< " (contacts of " << s.nInReach << " of " << nParticles_
@@ -448,7 +465,46 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
     }
     Info<< ", " << s.nContacts << " + " << s.nWallContacts << " wall contacts,"
         << " max overlap " << s.maxOverlapRatio << " D" << endl;
+}
 
+
+void Foam::dlmfdCoupling::evolve(volVectorField& U)
+{
+    const scalar dt = mesh_.time().deltaTValue();
+    clockTime clock;
+
+    // (2) Granular predictor and the bodies of the constraint
+    vectorField V0, omega0;
+    const List<fictitiousDomain::body> bodies(predictedBodies(V0, omega0));
+    List<fictitiousDomain::body> held;
+    const UList<fictitiousDomain::body>& solved = bodiesHeld(bodies, held);
+    stepReport report;
+    report.corrected = outer_.correctedIndex == mesh_.time().timeIndex();
+    if (report.corrected)
+    {
+        // The outer correctors solved this step already: from its start
+        fd_.rewindToStepStart();
+    }
+
+    // (3) Fictitious domain, distributed; its results on the master
+    payFluidGain(U, bodies, solved);
+    const scalar commBefore = fd_.communicationSeconds();
+    const List<fictitiousDomain::result>& res = fd_.solve(U, solved, dt);
+    const scalar fdComm = fd_.communicationSeconds() - commBefore;
+    costs_.fdSeconds += clock.timeIncrement() - fdComm;
+    costs_.commSeconds += fdComm;
+
+    // (4) On the master, or with owned particles on each body's owner:
+    // forces, torques and the granular corrector, contacts from X^n over
+    // dt
+    List<vector> V3s, omega3s;
+    takeResults(bodies, solved, res, V0, omega0, V3s, omega3s, report);
+    granularCorrector(bodies, V3s, omega3s, report, clock);
+
+    carryInteriorFluid(U, solved, res);
+    costs_.fdSeconds += clock.timeIncrement();
+
+    logStep(report);
     if (mesh_.time().timeIndex() % seriesInterval_ == 0)
     {
         if (seriesPerRank())

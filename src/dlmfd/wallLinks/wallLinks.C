@@ -131,135 +131,178 @@ Foam::wallLinks::wallLinks(const fvMesh& mesh, const bool on)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::wallLinks::update
+Foam::label Foam::wallLinks::placeOf(const label global) const
+{
+    const label b = places_(global);
+    if (b < 0)
+    {
+        FatalErrorInFunction
+            << "a ghost cell belongs to particle " << global
+            << " (global index), which this rank does not hold"
+            << exit(FatalError);
+    }
+    return b;
+}
+
+
+void Foam::wallLinks::addCrossing
 (
-    const volScalarField& owner,
-    const UList<body>& bodies,
-    const periodicImages& images
+    const scan& s,
+    link L,
+    const point& a,
+    const point& b,
+    const label bi,
+    const vector& S,
+    const point& xf
 )
 {
-    links_.clear();
-    const vectorField& C = mesh_.C().primitiveField();
-    const vectorField& Sf = mesh_.Sf().primitiveField();
-    const vectorField& Cf = mesh_.Cf().primitiveField();
-    const labelUList& own = mesh_.owner();
-    const labelUList& nei = mesh_.neighbour();
-    // The owner field holds global indices (so do the marks below, which
-    // cross the ranks and decide ties by index): a body's place in bodies
-    // is looked up where its motion is needed
-    places_ = bodyPlaces(bodies);
-    const bodyPlaces& places = places_;
-    globalOf_.setSize(bodies.size());
-    forAll(bodies, b)
-    {
-        globalOf_[b] = bodyPlaces::global(bodies, b);
-    }
-    auto placeOf = [&](const label global)
-    {
-        const label b = places(global);
-        if (b < 0)
-        {
-            FatalErrorInFunction
-                << "a ghost cell belongs to particle " << global
-                << " (global index), which this rank does not hold"
-                << exit(FatalError);
-        }
-        return b;
-    };
-    const scalarField& body = owner.primitiveField();
-    PtrList<scalarField> ownerNbr(mesh_.boundary().size());
-    PtrList<vectorField> deltaNbr(mesh_.boundary().size());
-    forAll(mesh_.boundary(), patchi)
-    {
-        const fvPatch& p = mesh_.boundary()[patchi];
-        if (p.coupled())
-        {
-            ownerNbr.set
-            (
-                patchi,
-                owner.boundaryField()[patchi].patchNeighbourField().ptr()
-            );
-            deltaNbr.set(patchi, p.delta().ptr());
-        }
-    }
-
     // A link from fluid cell c at a to the body cell's centre b through
     // the face with outward area S (from c) and centre xf
-    auto add = [&](link& L, const point& a, const point& b, const label bi,
-        const vector& S, const point& xf)
-    {
-        const label bp = placeOf(bi);
-        const scalar t =
-            crossing(bodies[bp], images, a, b, L.uWall, L.arm);
-        const vector e = (b - a)/mag(b - a);
-        L.body = bp;
-        L.d = t*mag(b - a);
-        L.a = (xf - a) & e;
-        // The third point: the fluid cell beyond c's opposite face, or
-        // where the line meets that cell's body (a gap of one cell)
-        point beyond;
-        label beyondBody = -1;
-        L.opposite = oppositeFace
-        (
-            L.fluid, S, body, ownerNbr, deltaNbr, beyond, beyondBody
-        );
-        if (L.opposite >= 0 && beyondBody < 0)
-        {
-            L.hE = mag(beyond - a);
-        }
-        else if (L.opposite >= 0)
-        {
-            vector arm;
-            L.hE = crossing
-            (
-                bodies[placeOf(beyondBody)], images, a, beyond, L.uFar, arm
-            )*mag(beyond - a);
-            L.farWall = true;
-            L.opposite = -1;
-        }
-        links_.append(L);
-    };
-
-    forAll(nei, f)
-    {
-        const label o = own[f], n = nei[f];
-        const bool oBody = body[o] >= 0, nBody = body[n] >= 0;
-        if (oBody == nBody)
-        {
-            continue;
-        }
-        link L;
-        L.face = f;
-        L.solid = oBody ? o : n;
-        L.fluid = oBody ? n : o;
-        add
-        (
-            L, C[L.fluid], C[L.solid], label(body[L.solid]),
-            oBody ? -Sf[f] : Sf[f], Cf[f]
-        );
-    }
-
-    // Links between two fluid cells that pass through a body (an edge or
-    // a corner cut off): the fluid cells within two faces of a body's
-    // cell, each with that body (the nearest in hops, of two met at the
-    // same hop the lower index: not the first in face order, which
-    // changes with the decomposition; across coupled patches too, so
-    // that both sides of a face agree)
-    volScalarField near
+    const label bp = placeOf(bi);
+    const scalar t = crossing(s.bodies[bp], s.images, a, b, L.uWall, L.arm);
+    const vector e = (b - a)/mag(b - a);
+    L.body = bp;
+    L.d = t*mag(b - a);
+    L.a = (xf - a) & e;
+    // The third point: the fluid cell beyond c's opposite face, or
+    // where the line meets that cell's body (a gap of one cell)
+    point beyond;
+    label beyondBody = -1;
+    L.opposite = oppositeFace
     (
-        IOobject
-        (
-            "wallLinksNear",
-            mesh_.time().timeName(),
-            mesh_,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        ),
-        mesh_,
-        dimensionedScalar("none", dimless, -1),
-        calculatedFvPatchScalarField::typeName
+        L.fluid, S, s.owner, s.ownerNbr, s.deltaNbr, beyond, beyondBody
     );
+    if (L.opposite >= 0 && beyondBody < 0)
+    {
+        L.hE = mag(beyond - a);
+    }
+    else if (L.opposite >= 0)
+    {
+        vector arm;
+        L.hE = crossing
+        (
+            s.bodies[placeOf(beyondBody)], s.images, a, beyond, L.uFar, arm
+        )*mag(beyond - a);
+        L.farWall = true;
+        L.opposite = -1;
+    }
+    links_.append(L);
+}
+
+
+bool Foam::wallLinks::addThrough
+(
+    const scan& s,
+    link L,
+    const point& a,
+    const point& b,
+    const label bi,
+    const point& xf
+)
+{
+    // Each side of a face between two fluid cells whose line passes
+    // through a body: a link to its own wall, the line through the wall
+    // and its centre
+    const label bp = placeOf(bi);
+    scalar tIn, tOut;
+    vector uIn, uOut, armIn, armOut;
+    if
+    (
+        !passesThrough
+        (
+            s.bodies[bp], s.images, a, b, tIn, tOut, uIn, uOut, armIn,
+            armOut
+        )
+    )
+    {
+        return false;
+    }
+    const scalar Delta = mag(b - a);
+    L.through = true;
+    L.d = max(tIn, minFraction)*Delta;
+    L.a = (xf - a) & (b - a)/Delta;
+    L.uWall = uIn;
+    L.arm = armIn;
+    L.body = bp;
+    links_.append(L);
+    return true;
+}
+
+
+Foam::label Foam::wallLinks::addThroughAny
+(
+    const scan& s,
+    const link& L,
+    const point& a,
+    const point& b,
+    const FixedList<label, 2>& candidates,
+    const point& xf
+)
+{
+    for (const label bi : candidates)
+    {
+        if (bi < 0)
+        {
+            break;
+        }
+        if (addThrough(s, L, a, b, bi, xf))
+        {
+            return bi;
+        }
+    }
+    return -1;
+}
+
+
+Foam::FixedList<Foam::label, 2> Foam::wallLinks::nearPair
+(
+    const scalar a,
+    const scalar b
+)
+{
+    // The two cells' near bodies, the lower index first (both sides of a
+    // coupled face see the same pair)
+    FixedList<label, 2> c({label(min(a, b)), label(max(a, b))});
+    if (c[0] < 0 || c[0] == c[1])
+    {
+        c[0] = c[1];
+        c[1] = -1;
+    }
+    return c;
+}
+
+
+Foam::tmp<Foam::volScalarField> Foam::wallLinks::nearBodies
+(
+    const scalarField& body
+) const
+{
+    // The fluid cells within two faces of a body's cell, each with that
+    // body (the nearest in hops, of two met at the same hop the lower
+    // index: not the first in face order, which changes with the
+    // decomposition; across coupled patches too, so that both sides of a
+    // face agree)
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    tmp<volScalarField> tnear
+    (
+        new volScalarField
+        (
+            IOobject
+            (
+                "wallLinksNear",
+                mesh_.time().timeName(),
+                mesh_,
+                IOobject::NO_READ,
+                IOobject::NO_WRITE,
+                false
+            ),
+            mesh_,
+            dimensionedScalar("none", dimless, -1),
+            calculatedFvPatchScalarField::typeName
+        )
+    );
+    volScalarField& near = tnear.ref();
     scalarField& nearBody = near.primitiveFieldRef();
     for (int hop = 0; hop < 2; ++hop)
     {
@@ -321,67 +364,22 @@ void Foam::wallLinks::update
         }
     }
     near.correctBoundaryConditions();
+    return tnear;
+}
 
-    // Each side of such a face a link to its own wall, the line through
-    // the wall and its centre
-    const auto addThrough = [&](link L, const point& a, const point& b,
-        const label bi, const point& xf)
-    {
-        const label bp = placeOf(bi);
-        scalar tIn, tOut;
-        vector uIn, uOut, armIn, armOut;
-        if
-        (
-            !passesThrough
-            (
-                bodies[bp], images, a, b, tIn, tOut, uIn, uOut, armIn,
-                armOut
-            )
-        )
-        {
-            return false;
-        }
-        const scalar Delta = mag(b - a);
-        L.through = true;
-        L.d = max(tIn, minFraction)*Delta;
-        L.a = (xf - a) & (b - a)/Delta;
-        L.uWall = uIn;
-        L.arm = armIn;
-        L.body = bp;
-        links_.append(L);
-        return true;
-    };
-    // The bodies a face between two fluid cells may pass through: the
-    // two cells' near bodies, the lower index first (both sides of a
-    // coupled face see the same pair)
-    const auto candidates = [](const scalar a, const scalar b)
-    {
-        FixedList<label, 2> c({label(min(a, b)), label(max(a, b))});
-        if (c[0] < 0 || c[0] == c[1])
-        {
-            c[0] = c[1];
-            c[1] = -1;
-        }
-        return c;
-    };
-    // L's link through the first candidate the segment passes through:
-    // that body, or -1
-    const auto addThroughAny = [&](const link& L, const point& a,
-        const point& b, const FixedList<label, 2>& bodies, const point& xf)
-    {
-        for (const label bi : bodies)
-        {
-            if (bi < 0)
-            {
-                break;
-            }
-            if (addThrough(L, a, b, bi, xf))
-            {
-                return bi;
-            }
-        }
-        return label(-1);
-    };
+
+void Foam::wallLinks::addThroughLinks
+(
+    const scan& s,
+    const volScalarField& near
+)
+{
+    const vectorField& C = mesh_.C().primitiveField();
+    const vectorField& Cf = mesh_.Cf().primitiveField();
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const scalarField& body = s.owner;
+    const scalarField& nearBody = near.primitiveField();
     forAll(nei, f)
     {
         const label o = own[f], n = nei[f];
@@ -395,14 +393,14 @@ void Foam::wallLinks::update
         A.solid = n;
         const label bi = addThroughAny
         (
-            A, C[o], C[n], candidates(nearBody[o], nearBody[n]), Cf[f]
+            s, A, C[o], C[n], nearPair(nearBody[o], nearBody[n]), Cf[f]
         );
         if (bi >= 0)
         {
             link B(A);
             B.fluid = n;
             B.solid = o;
-            addThrough(B, C[n], C[o], bi, Cf[f]);
+            addThrough(s, B, C[n], C[o], bi, Cf[f]);
         }
     }
     forAll(mesh_.boundary(), patchi)
@@ -416,8 +414,8 @@ void Foam::wallLinks::update
         (
             near.boundaryField()[patchi].patchNeighbourField()
         );
-        const scalarField& bodyNbr = ownerNbr[patchi];
-        const vectorField& delta = deltaNbr[patchi];
+        const scalarField& bodyNbr = s.ownerNbr[patchi];
+        const vectorField& delta = s.deltaNbr[patchi];
         forAll(p.faceCells(), i)
         {
             const label l = p.faceCells()[i];
@@ -432,12 +430,79 @@ void Foam::wallLinks::update
             L.fluid = l;
             addThroughAny
             (
-                L, C[l], C[l] + delta[i], candidates(nearBody[l], nearNbr[i]),
-                p.Cf()[i]
+                s, L, C[l], C[l] + delta[i],
+                nearPair(nearBody[l], nearNbr[i]), p.Cf()[i]
             );
         }
     }
+}
 
+
+void Foam::wallLinks::update
+(
+    const volScalarField& owner,
+    const UList<body>& bodies,
+    const periodicImages& images
+)
+{
+    links_.clear();
+    const vectorField& C = mesh_.C().primitiveField();
+    const vectorField& Sf = mesh_.Sf().primitiveField();
+    const vectorField& Cf = mesh_.Cf().primitiveField();
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    // The owner field holds global indices (so do the marks of
+    // nearBodies, which cross the ranks and decide ties by index): a
+    // body's place in bodies is looked up where its motion is needed
+    places_ = bodyPlaces(bodies);
+    globalOf_.setSize(bodies.size());
+    forAll(bodies, b)
+    {
+        globalOf_[b] = bodyPlaces::global(bodies, b);
+    }
+    scan s{bodies, images, owner.primitiveField(), {}, {}};
+    s.ownerNbr.setSize(mesh_.boundary().size());
+    s.deltaNbr.setSize(mesh_.boundary().size());
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatch& p = mesh_.boundary()[patchi];
+        if (p.coupled())
+        {
+            s.ownerNbr.set
+            (
+                patchi,
+                owner.boundaryField()[patchi].patchNeighbourField().ptr()
+            );
+            s.deltaNbr.set(patchi, p.delta().ptr());
+        }
+    }
+    const scalarField& body = s.owner;
+
+    // The faces between a fluid and a body cell
+    forAll(nei, f)
+    {
+        const label o = own[f], n = nei[f];
+        const bool oBody = body[o] >= 0, nBody = body[n] >= 0;
+        if (oBody == nBody)
+        {
+            continue;
+        }
+        link L;
+        L.face = f;
+        L.solid = oBody ? o : n;
+        L.fluid = oBody ? n : o;
+        addCrossing
+        (
+            s, L, C[L.fluid], C[L.solid], label(body[L.solid]),
+            oBody ? -Sf[f] : Sf[f], Cf[f]
+        );
+    }
+
+    // Links between two fluid cells that pass through a body (an edge or
+    // a corner cut off)
+    addThroughLinks(s, nearBodies(body)());
+
+    // The coupled faces whose other side is a body cell
     forAll(mesh_.boundary(), patchi)
     {
         const fvPatch& p = mesh_.boundary()[patchi];
@@ -446,8 +511,8 @@ void Foam::wallLinks::update
             continue;
         }
         const labelUList& fc = p.faceCells();
-        const scalarField& bodyNbr = ownerNbr[patchi];
-        const vectorField& delta = deltaNbr[patchi];
+        const scalarField& bodyNbr = s.ownerNbr[patchi];
+        const vectorField& delta = s.deltaNbr[patchi];
         forAll(fc, i)
         {
             // Only where this side is the fluid one: the other side's
@@ -460,9 +525,9 @@ void Foam::wallLinks::update
             L.patch = patchi;
             L.patchFace = i;
             L.fluid = fc[i];
-            add
+            addCrossing
             (
-                L, C[fc[i]], C[fc[i]] + delta[i], label(bodyNbr[i]),
+                s, L, C[fc[i]], C[fc[i]] + delta[i], label(bodyNbr[i]),
                 p.Sf()[i], p.Cf()[i]
             );
         }
