@@ -128,16 +128,8 @@ Foam::fictitiousDomain::fictitiousDomain
     stepStart_(),
     owed_(),
     results_(),
-    commSeconds_(0),
-    received_(),
-    nSolves_(0),
-    perRank_(false),
-    holders_(),
-    largestCellSize_(0),
-    exchange_(),
-    ownerBoxes_(),
-    largestRadius_(0),
-    holderPartners_()
+    traffic_(),
+    perRank_()
 {
     // Before anything is solved or written: a mesh the coupling is not
     // validated on stops here, not by diverging later
@@ -268,7 +260,7 @@ void Foam::fictitiousDomain::updateMesh()
 {
     search_.rebuild();
     owners_ = cellOwnership(mesh_.nCells());
-    if (perRank_)
+    if (perRank_.on)
     {
         updateHolders();
     }
@@ -444,7 +436,7 @@ void Foam::fictitiousDomain::startCandidates
     const label n = bodies.size();
     scalarField sumV, count;
     localCellSums(bodies, sumV, count);
-    if (perRank_)
+    if (perRank_.on)
     {
         shareAmongHolders
         (
@@ -465,10 +457,10 @@ void Foam::fictitiousDomain::startCandidates
         SubField<scalar>(both, n, n) = count;
         clockTime clock;
         reduce(both, sumOp<scalarField>());
-        commSeconds_ += clock.elapsedTime();
+        traffic_.commSeconds += clock.elapsedTime();
         sumV = SubField<scalar>(both, n);
         count = SubField<scalar>(both, n, n);
-        cand.solver = bodyExchange::solvingRanks(nHere, commSeconds_);
+        cand.solver = bodyExchange::solvingRanks(nHere, traffic_.commSeconds);
     }
     cand.h = cellSizes(bodies, sumV, count);
     cand.shifts.setSize(n);

@@ -187,8 +187,8 @@ void Foam::fictitiousDomain::gatherContributions
         res.interiorCells = SubList<label>(cells, con.nInterior);
         res.interiorCentres = SubList<point>(con.centres, con.nInterior);
         const label q = cand.solver[b];
-        received_.bodiesHere += 1;
-        received_.cellsHere += cells.size();
+        traffic_.received.bodiesHere += 1;
+        traffic_.received.cellsHere += cells.size();
         bodiesTo[q].append(b);
         cellsTo[q].append(std::move(cells));
         outgoing[q].append(std::move(con));
@@ -235,7 +235,7 @@ void Foam::fictitiousDomain::prependMasterParts
     // With bodies per rank, the master's share of a body it does not
     // hold comes first, as the master's part did with every body on
     // every rank (sent when its momentum was not zero)
-    if (!perRank_ || owed_.masterMomentum.empty())
+    if (!perRank_.on || owed_.masterMomentum.empty())
     {
         return;
     }
@@ -374,7 +374,7 @@ void Foam::fictitiousDomain::finishSolve
     const UList<label>& solved
 )
 {
-    received_.bodiesSolved += solved.size();
+    traffic_.received.bodiesSolved += solved.size();
     labelList destination(solved.size()), solvedGlobal(solved.size());
     forAll(solved, k)
     {
@@ -383,10 +383,10 @@ void Foam::fictitiousDomain::finishSolve
     }
     bodyExchange::sendResults
     (
-        solved, solvedGlobal, destination, places_, results_, commSeconds_,
-        received_
+        solved, solvedGlobal, destination, places_, results_, traffic_.commSeconds,
+        traffic_.received
     );
-    ++nSolves_;
+    ++traffic_.nSolves;
 }
 
 
@@ -411,7 +411,7 @@ Foam::fictitiousDomain::solve
     vectorField& u = U.primitiveFieldRef();
 
     places_ = bodyPlaces(bodies);
-    received_.bodiesListed += bodies.size();
+    traffic_.received.bodiesListed += bodies.size();
 
     // Every body's candidate cells on this rank, and the cells shared out
     candidates cand;
@@ -433,7 +433,7 @@ Foam::fictitiousDomain::solve
         List<DynamicList<label>> bodiesTo(nProcs);
         List<DynamicList<contribution>> outgoing(nProcs);
         gatherContributions(bodies, cand, u, cellsTo, bodiesTo, outgoing);
-        if (perRank_)
+        if (perRank_.on)
         {
             refuseOwedNotHeld();
         }
@@ -453,7 +453,7 @@ Foam::fictitiousDomain::solve
         // The bodies this rank solves, from the cells of every rank
         const List<List<contribution>> incoming
         (
-            bodyExchange::toSolvers(outgoing, commSeconds_, received_)
+            bodyExchange::toSolvers(outgoing, traffic_.commSeconds, traffic_.received)
         );
         List<DynamicList<const contribution*>> partsOf(bodies.size());
         List<DynamicList<labelPair>> whereFrom(bodies.size());
@@ -474,8 +474,8 @@ Foam::fictitiousDomain::solve
         List<List<vectorField>> backAll, backDevAll;
         bodyExchange::toOwners
         (
-            forces, deviations, backAll, backDevAll, commSeconds_,
-            received_
+            forces, deviations, backAll, backDevAll, traffic_.commSeconds,
+            traffic_.received
         );
         applyReturned
         (

@@ -30,7 +30,7 @@ Foam::scalar Foam::fictitiousDomain::holderReach
     // its wall links within three faces of its cells; the cells it held at
     // the last step, a step's travel back, within one more cell (a body
     // moving farther is refused in owedForCellsLeft)
-    return shape.boundingRadius() + (holderCells() + 1)*largestCellSize_;
+    return shape.boundingRadius() + (holderCells() + 1)*perRank_.largestCellSize;
 }
 
 
@@ -49,7 +49,7 @@ void Foam::fictitiousDomain::ranksHolding
     DynamicList<label>& ranks
 ) const
 {
-    holders_.ranksNear
+    perRank_.holders.ranksNear
     (
         B.centre, holderReach(*B.shape), images_.period(), ranks
     );
@@ -63,22 +63,22 @@ void Foam::fictitiousDomain::ranksHolding
 
 void Foam::fictitiousDomain::updateHolders()
 {
-    holders_.update(search_, mesh_.bounds());
-    largestCellSize_ = 0;
+    perRank_.holders.update(search_, mesh_.bounds());
+    perRank_.largestCellSize = 0;
     forAll(mesh_.V(), c)
     {
-        largestCellSize_ = max(largestCellSize_, cellSize(mesh_.V()[c]));
+        perRank_.largestCellSize = max(perRank_.largestCellSize, cellSize(mesh_.V()[c]));
     }
-    reduce(largestCellSize_, maxOp<scalar>());
-    holderPartners_ = holderPartners();
-    heldBy_.clear();
+    reduce(perRank_.largestCellSize, maxOp<scalar>());
+    perRank_.partners = holderPartners();
+    perRank_.heldBy.clear();
 }
 
 
 Foam::labelList Foam::fictitiousDomain::holderPartners() const
 {
     const label me = Pstream::myProcNo();
-    const scalar R = largestRadius_ + (holderCells() + 1)*largestCellSize_;
+    const scalar R = perRank_.largestRadius + (holderCells() + 1)*perRank_.largestCellSize;
     const vector& period = images_.period();
     DynamicList<label> partners;
     for (label q = 0; q < Pstream::nProcs(); ++q)
@@ -87,10 +87,10 @@ Foam::labelList Foam::fictitiousDomain::holderPartners() const
         (
             q != me
          && (
-                holders_.boxNear(q, holders_.box(me), 2*R, period)
-             || holders_.boxNear(me, holders_.box(q), 2*R, period)
-             || holders_.boxNear(me, ownerBoxes_[q], R, period)
-             || holders_.boxNear(q, ownerBoxes_[me], R, period)
+                perRank_.holders.boxNear(q, perRank_.holders.box(me), 2*R, period)
+             || perRank_.holders.boxNear(me, perRank_.holders.box(q), 2*R, period)
+             || perRank_.holders.boxNear(me, perRank_.ownerBoxes[q], R, period)
+             || perRank_.holders.boxNear(q, perRank_.ownerBoxes[me], R, period)
             )
         )
         {
@@ -106,9 +106,9 @@ const Foam::List<Foam::labelList>& Foam::fictitiousDomain::holdersOf
     const UList<body>& bodies
 ) const
 {
-    if (heldBy_.foundFor(bodies))
+    if (perRank_.heldBy.foundFor(bodies))
     {
-        return heldBy_.holders;
+        return perRank_.heldBy.holders;
     }
     const label me = Pstream::myProcNo();
 
@@ -116,8 +116,8 @@ const Foam::List<Foam::labelList>& Foam::fictitiousDomain::holdersOf
     // rank talks to are its partners by the boxes alone, so that a rank
     // that lacks a body another holds still answers (with records the
     // other finds wrong: a message, not a wait)
-    List<labelList>& holders = heldBy_.holders;
-    heldBy_.clear();
+    List<labelList>& holders = perRank_.heldBy.holders;
+    perRank_.heldBy.clear();
     holders.setSize(bodies.size());
     DynamicList<label> near;
     forAll(bodies, b)
@@ -140,28 +140,28 @@ const Foam::List<Foam::labelList>& Foam::fictitiousDomain::holdersOf
                 << " m of and whose results rank " << bodies[b].resultRank
                 << " takes" << exit(FatalError);
         }
-        if (bodies[b].shape->boundingRadius() > largestRadius_)
+        if (bodies[b].shape->boundingRadius() > perRank_.largestRadius)
         {
             FatalErrorInFunction
                 << "particle " << particle << " reaches "
                 << bodies[b].shape->boundingRadius() << " m from its centre,"
                 << " beyond the largest bounding radius given at the start, "
-                << largestRadius_ << " m" << exit(FatalError);
+                << perRank_.largestRadius << " m" << exit(FatalError);
         }
         holders[b] = near;
         for (const label r : near)
         {
-            if (r != me && findSortedIndex(holderPartners_, r) < 0)
+            if (r != me && findSortedIndex(perRank_.partners, r) < 0)
             {
                 FatalErrorInFunction
                     << "rank " << r << " holds particle " << particle
                     << " with rank " << me << " but is not among its"
-                    << " partners " << holderPartners_ << " (their boxes lie"
+                    << " partners " << perRank_.partners << " (their boxes lie"
                     << " beyond the largest holder reach)" << exit(FatalError);
             }
         }
     }
-    heldBy_.keepKey(bodies);
+    perRank_.heldBy.keepKey(bodies);
     return holders;
 }
 
@@ -172,16 +172,16 @@ void Foam::fictitiousDomain::exchangeAmongHolders
 )
 {
     clockTime clock;
-    exchange_.exchange(m);
-    commSeconds_ += clock.elapsedTime();
+    perRank_.exchange.exchange(m);
+    traffic_.commSeconds += clock.elapsedTime();
     for (const rankExchange::messages& msg : m)
     {
         for (const List<char>& in : msg.in)
         {
             if (in.size())
             {
-                ++received_.messages;
-                received_.bytes += in.size();
+                ++traffic_.received.messages;
+                traffic_.received.bytes += in.size();
             }
         }
     }
@@ -207,7 +207,7 @@ void Foam::fictitiousDomain::shareAmongHolders
         masterHolds[b] = holders[b].found(0);
     }
     List<rankExchange::messages> m(1);
-    m[0].setRanks(holderPartners_);
+    m[0].setRanks(perRank_.partners);
     const labelList& partners = m[0].ranks;
     forAll(bodies, b)
     {
@@ -317,7 +317,7 @@ void Foam::fictitiousDomain::sumAmongHolders
     // values, whether it has the values to share, and those
     const List<labelList>& holders = holdersOf(bodies);
     List<rankExchange::messages> m(1);
-    m[0].setRanks(holderPartners_);
+    m[0].setRanks(perRank_.partners);
     const labelList& partners = m[0].ranks;
     forAll(bodies, b)
     {
@@ -424,16 +424,16 @@ void Foam::fictitiousDomain::setBodiesPerRank
             << ownerBoxes.size() << " boxes of owned particles for "
             << Pstream::nProcs() << " ranks" << exit(FatalError);
     }
-    perRank_ = true;
-    ownerBoxes_.transfer(ownerBoxes);
-    largestRadius_ = largestRadius;
+    perRank_.on = true;
+    perRank_.ownerBoxes.transfer(ownerBoxes);
+    perRank_.largestRadius = largestRadius;
     updateHolders();
 }
 
 
 bool Foam::fictitiousDomain::holds(const body& B) const
 {
-    return !perRank_ || rankHolds(Pstream::myProcNo(), B);
+    return !perRank_.on || rankHolds(Pstream::myProcNo(), B);
 }
 
 
@@ -442,7 +442,7 @@ bool Foam::fictitiousDomain::rankHolds(const label r, const body& B) const
     // The test ranksHolding makes for rank r
     return
         B.resultRank == r
-     || holders_.rankNear
+     || perRank_.holders.rankNear
         (
             r, B.centre, holderReach(*B.shape), images_.period()
         );
