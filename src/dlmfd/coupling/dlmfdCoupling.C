@@ -303,10 +303,10 @@ void Foam::dlmfdCoupling::checkSettings() const
         wordList({"fluidDensity", "seriesInterval", "fictitiousDomain"}),
         word::null, propertiesFile
     );
-    if (seriesInterval_ < 1)
+    if (output_.seriesInterval < 1)
     {
         FatalIOErrorInFunction(properties_)
-            << propertiesFile << ": seriesInterval " << seriesInterval_
+            << propertiesFile << ": seriesInterval " << output_.seriesInterval
             << " is not allowed; it must be a whole number of time steps"
             << " >= 1 (1: a row of particles.dat every step)"
             << exit(FatalIOError);
@@ -407,9 +407,9 @@ void Foam::dlmfdCoupling::openSeries()
            /"postProcessing"/"dlmfdParticles"/mesh_.time().timeName()
         );
         mkDir(dir);
-        series_.reset(new OFstream(dir/"particles.dat"));
-        series_().precision(10);
-        series_()
+        output_.series.reset(new OFstream(dir/"particles.dat"));
+        output_.series().precision(10);
+        output_.series()
             << (seriesPerRank() ? "# timeIndex globalIndex " : "# ")
             << "time id x y z qw qx qy qz Ux Uy Uz omegax omegay omegaz"
             << " Fhx Fhy Fhz Thx Thy Thz Fcx Fcy Fcz Tcx Tcy Tcz"
@@ -442,12 +442,8 @@ Foam::dlmfdCoupling::dlmfdCoupling
         IOdictionary(constantDict(mesh, "collisionProperties")),
         effects
     ),
-    fresh_(),
-    whole_(),
+    ownedScene_(),
     nParticles_(0),
-    part_(),
-    boxes_(),
-    exchange_(),
     owned_(),
     fd_
     (
@@ -457,9 +453,12 @@ Foam::dlmfdCoupling::dlmfdCoupling
     ddt_(),
     Fh_(),
     Th_(),
-    series_(),
-    seriesInterval_(properties_.getOrDefault<label>("seriesInterval", 1)),
-    vtk_(mesh.time().globalPath()/"VTK", mesh.time().value(), true),
+    output_
+    (
+        properties_.getOrDefault<label>("seriesInterval", 1),
+        mesh.time().globalPath()/"VTK",
+        mesh.time().value()
+    ),
     costs_(),
     outer_()
 {
@@ -478,21 +477,21 @@ Foam::dlmfdCoupling::dlmfdCoupling
     // Periodic directions, as the mesh's cyclics and the domain say
     setPeriodicity();
 
-    // With owned particles the master alone reads the scene, into whole_,
+    // With owned particles the master alone reads the scene, into ownedScene_.whole,
     // and hands each rank its own particles and those near it (setOwned)
     if (granular_.ownedDistribution())
     {
-        whole_ = sceneWithoutParticles(effects);
+        ownedScene_.whole = sceneWithoutParticles(effects);
     }
     const fileName particleFile
     (
-        whole_.valid()
-      ? readParticles(*whole_, true)
+        ownedScene_.whole.valid()
+      ? readParticles(*ownedScene_.whole, true)
       : readParticles(granular_)
     );
     nParticles_ = returnReduce(scene().size(), maxOp<label>());
     checkPlanarParticles(particleFile);
-    if (whole_.valid())
+    if (ownedScene_.whole.valid())
     {
         setOwned(effects);
     }
@@ -530,7 +529,7 @@ void Foam::dlmfdCoupling::write()
     if (owned_)
     {
         // The states and the contact histories from their owners
-        owned_->gatherScene(Pstream::master() ? whole_.get() : nullptr);
+        owned_->gatherScene(Pstream::master() ? ownedScene_.whole.get() : nullptr);
     }
     if (Pstream::master())
     {
@@ -550,11 +549,11 @@ void Foam::dlmfdCoupling::writeVTK()
     };
     if (seriesPerRank())
     {
-        vtk_.writePieces(*part_, runTime.value(), runTime.timeIndex(), given);
+        output_.vtk.writePieces(*ownedScene_.part, runTime.value(), runTime.timeIndex(), given);
     }
     else if (Pstream::master())
     {
-        vtk_.write(scene(), runTime.value(), runTime.timeIndex(), given);
+        output_.vtk.write(scene(), runTime.value(), runTime.timeIndex(), given);
     }
 }
 

@@ -36,14 +36,14 @@ void Foam::dlmfdCoupling::setOwned(const sceneEffects& effects)
     meshBoxes[Pstream::myProcNo()] = boundBox(mesh_.points(), false);
     Pstream::gatherList(meshBoxes);
     Pstream::scatterList(meshBoxes);
-    boxes_ = boxDecomposition::fromRankBoxes
+    ownedScene_.boxes = boxDecomposition::fromRankBoxes
     (
         granular_.domain(), granular_.periodic(), meshBoxes
     );
-    const bool fromMesh = boxes_.valid();
+    const bool fromMesh = ownedScene_.boxes.valid();
     if (!fromMesh)
     {
-        boxes_.reset
+        ownedScene_.boxes.reset
         (
             new boxDecomposition
             (
@@ -55,14 +55,14 @@ void Foam::dlmfdCoupling::setOwned(const sceneEffects& effects)
             )
         );
     }
-    const labelVector& n = boxes_->n();
+    const labelVector& n = ownedScene_.boxes->n();
 
     // Each rank's fictitious domain takes the bodies near its cells and
     // its own
     List<boundBox> ownerBoxes(Pstream::nProcs());
     forAll(ownerBoxes, r)
     {
-        ownerBoxes[r] = boxes_->bounds(r);
+        ownerBoxes[r] = ownedScene_.boxes->bounds(r);
     }
     scalar largestRadius = 0;
     for (label i = 0; i < scene().size(); ++i)
@@ -75,16 +75,16 @@ void Foam::dlmfdCoupling::setOwned(const sceneEffects& effects)
 
     // This rank's part and mirror: its own particles and those its first
     // step lists, from the master's reading
-    part_ = sceneWithoutParticles(effects);
+    ownedScene_.part = sceneWithoutParticles(effects);
     UPtrList<granularSystem> parts(1);
-    parts.set(0, part_.get());
+    parts.set(0, ownedScene_.part.get());
     {
         const List<List<granularSystem::particleRecord>> near
         (
             ownedGranularSteps::scatterScene
             (
-                exchange_, *boxes_,
-                Pstream::master() ? whole_.get() : nullptr,
+                ownedScene_.exchange, *ownedScene_.boxes,
+                Pstream::master() ? ownedScene_.whole.get() : nullptr,
                 Pstream::master() ? destinationsAtStart() : List<labelList>(),
                 parts
             )
@@ -92,7 +92,7 @@ void Foam::dlmfdCoupling::setOwned(const sceneEffects& effects)
         granular_.setScene(granular_.localConstants());
         setMirror(near[0]);
     }
-    owned_.reset(new ownedGranularSteps(std::move(parts), *boxes_, exchange_));
+    owned_.reset(new ownedGranularSteps(std::move(parts), *ownedScene_.boxes, ownedScene_.exchange));
     Info<< "Particle distribution: owned, " << n.x() << " x " << n.y()
         << " x " << n.z() << " boxes of the collision domain; each rank"
         << " moves the particles in its box" << nl;
@@ -140,7 +140,7 @@ Foam::dlmfdCoupling::bodiesHeld
 
 Foam::label Foam::dlmfdCoupling::mirrorPlace(const label g) const
 {
-    return owned_ ? findSortedIndex(fresh_, g) : g;
+    return owned_ ? findSortedIndex(ownedScene_.fresh, g) : g;
 }
 
 
@@ -150,10 +150,10 @@ void Foam::dlmfdCoupling::setMirror
 )
 {
     granular_.setParticles(records, boolList(records.size(), false), nullptr);
-    fresh_.resize(records.size());
+    ownedScene_.fresh.resize(records.size());
     forAll(records, k)
     {
-        fresh_[k] = records[k].global;
+        ownedScene_.fresh[k] = records[k].global;
     }
 }
 
@@ -165,12 +165,12 @@ const Foam::fictitiousDomain::body& Foam::dlmfdCoupling::ownBody
     const label i
 ) const
 {
-    const label g = part_->globalIndex(i);
+    const label g = ownedScene_.part->globalIndex(i);
     const label k = places(g);
     if (k < 0)
     {
         FatalErrorInFunction
-            << "Particle " << part_->id(i) << " (global index " << g
+            << "Particle " << ownedScene_.part->id(i) << " (global index " << g
             << ") is owned by rank " << Pstream::myProcNo() << " but is not"
             << " in the rank's list of bodies: its state was not the last"
             << " step's here (a rank is sent the state of each particle that"
@@ -245,7 +245,7 @@ Foam::List<Foam::labelList> Foam::dlmfdCoupling::destinationsAtStart() const
         const scalar next = nextStepTravel(p);
         const scalar reach = stateReach(p) + next;
         const boundBox centre(p.position(), p.position());
-        boxes_->ranksWithin(p.position(), next, owners);
+        ownedScene_.boxes->ranksWithin(p.position(), next, owners);
         to.clear();
         for (label q = 0; q < nProcs; ++q)
         {
@@ -276,7 +276,7 @@ Foam::labelList Foam::dlmfdCoupling::statePartners(const scalar reach) const
     // rank's cells or box come near (each side finds the other)
     const label me = Pstream::myProcNo();
     DynamicList<label> boxNeighbours;
-    boxes_->neighbours(me, reach, boxNeighbours);
+    ownedScene_.boxes->neighbours(me, reach, boxNeighbours);
     DynamicList<label> partners;
     for (label q = 0; q < Pstream::nProcs(); ++q)
     {
@@ -284,8 +284,8 @@ Foam::labelList Foam::dlmfdCoupling::statePartners(const scalar reach) const
         (
             q != me
          && (
-                fd_.rankNearBox(q, boxes_->bounds(me), reach)
-             || fd_.rankNearBox(me, boxes_->bounds(q), reach)
+                fd_.rankNearBox(q, ownedScene_.boxes->bounds(me), reach)
+             || fd_.rankNearBox(me, ownedScene_.boxes->bounds(q), reach)
              || boxNeighbours.found(q)
             )
         )
@@ -312,7 +312,7 @@ void Foam::dlmfdCoupling::sendStates
     // exchange of cell sums). A mesh that changes around the particles
     // may reach farther at its next update (stateReach)
     const label me = Pstream::myProcNo();
-    const granularSystem& part = *part_;
+    const granularSystem& part = *ownedScene_.part;
     List<List<labelList>> sendTo(1, List<labelList>(part.size()));
     if (everyStateEverywhere())
     {
@@ -356,7 +356,7 @@ void Foam::dlmfdCoupling::sendStates
         fd_.ranksNear(p.position(), reach, near);
         // and the ranks whose box it may enter in the next step: its owner
         // then, which needs its body in the step's list
-        boxes_->ranksWithin(p.position(), next, nextOwners);
+        ownedScene_.boxes->ranksWithin(p.position(), next, nextOwners);
         DynamicList<label> to(near.size());
         for (const label r : near)
         {
@@ -403,7 +403,7 @@ Foam::label Foam::dlmfdCoupling::evolveOwned
     // part by the same calls the master makes in the master-side step
     // (the part holds its own particles only: the last step dropped the
     // ghosts)
-    granularSystem& part = *part_;
+    granularSystem& part = *ownedScene_.part;
     const bodyPlaces places(bodies);
     for (label i = 0; i < part.size(); ++i)
     {

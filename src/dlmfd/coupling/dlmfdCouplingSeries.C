@@ -73,11 +73,11 @@ void Foam::dlmfdCoupling::writeSeriesRows()
 {
     // (with owned particles each owner has its particles' hydrodynamic
     // forces, and writes their rows)
-    if (!series_.valid())
+    if (!output_.series.valid())
     {
         return;
     }
-    OFstream& os = series_();
+    OFstream& os = output_.series();
     const scalar t = mesh_.time().value();
     const scalar dt = mesh_.time().deltaTValue();
     // (i: the global index)
@@ -106,7 +106,7 @@ void Foam::dlmfdCoupling::writeSeriesRows()
     };
     if (seriesPerRank())
     {
-        const granularSystem& part = *part_;
+        const granularSystem& part = *ownedScene_.part;
         const label timeIndex = mesh_.time().timeIndex();
         for (label k = 0; k < part.size(); ++k)
         {

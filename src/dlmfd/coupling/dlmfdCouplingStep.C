@@ -47,7 +47,7 @@ Foam::List<Foam::fictitiousDomain::body> Foam::dlmfdCoupling::predictedBodies
         b.index = granular_.globalIndex(k);
         // With owned particles the owner takes the body's result (the
         // box its centre is in, as the granular step's migration decides)
-        b.resultRank = owned_ ? boxes_->rankOf(p.position()) : 0;
+        b.resultRank = owned_ ? ownedScene_.boxes->rankOf(p.position()) : 0;
         b.R = p.R();
         b.free = p.motion() == motionKind::free;
         b.rotates = p.rotates();
@@ -505,7 +505,7 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
     costs_.fdSeconds += clock.timeIncrement();
 
     logStep(report);
-    if (mesh_.time().timeIndex() % seriesInterval_ == 0)
+    if (mesh_.time().timeIndex() % output_.seriesInterval == 0)
     {
         if (seriesPerRank())
         {
