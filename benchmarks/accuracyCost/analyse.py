@@ -106,12 +106,10 @@ def plot(rows, png):
         unit = rs[0].get("time_unit") or "unit"
         for sweep, (mk, colour) in SERIES.items():
             pts = [r for r in rs if r["sweep"] == sweep]
-            if sweep in ("resolution", "time step", "sub-steps"):
-                # The base run belongs to every series around it
-                base = [r for r in rs if r["sweep"] == "resolution"]
-                if sweep == "time step" and pts:
-                    N = pts[0]["resolution"]
-                    pts += [r for r in base if r["resolution"] == N and r["mesh"] == pts[0]["mesh"]]
+            if sweep == "time step" and pts:
+                # The base run (of the resolution series) belongs to it too
+                pts += [r for r in rs if r["sweep"] == "resolution"
+                        and (r["resolution"], r["mesh"]) == (pts[0]["resolution"], pts[0]["mesh"])]
             if not pts:
                 continue
             key = (lambda r: r["cfl"]) if sweep == "time step" else \
