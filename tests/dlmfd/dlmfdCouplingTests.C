@@ -48,4 +48,16 @@ TEST(dlmfdCoupling, predictorTurnsTheBodyAsTheGranularStepDoes)
 }
 
 
+TEST(particleDistribution, strategiesAreTheRunTimeSelectedMasterAndOwned)
+{
+    // What particleDistribution in constant/collisionProperties may name:
+    // a new strategy is a new model of the table, the coupling unchanged
+    const wordList names
+    (
+        particleDistribution::couplingConstructorTablePtr_->sortedToc()
+    );
+    EXPECT_EQ(names, wordList({"master", "owned"}));
+}
+
+
 // ************************************************************************* //

@@ -16,31 +16,10 @@ License
 #include "OStringStream.H"
 #include "problemList.H"
 #include "granularInput.H"
-#include "particleFileReader.H"
 #include "planeWall.H"
 #include "Time.H"
 #include "cyclicPolyPatch.H"
 #include "processorCyclicPolyPatch.H"
-
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
-
-namespace
-{
-
-Foam::IOobject constantDict(const Foam::fvMesh& mesh, const Foam::word& name)
-{
-    return Foam::IOobject
-    (
-        name,
-        mesh.time().constant(),
-        mesh,
-        Foam::IOobject::MUST_READ,
-        Foam::IOobject::NO_WRITE
-    );
-}
-
-} // End anonymous namespace
-
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -136,67 +115,6 @@ void Foam::dlmfdCoupling::setPeriodicity()
 }
 
 
-Foam::fileName Foam::dlmfdCoupling::readParticles
-(
-    granularSystem& into,
-    const bool masterOnly
-)
-{
-    // Written by the solver (processor0's in parallel), else the case's
-    // own, by hand or by placeParticles
-    const Time& runTime = mesh_.time();
-    const fileName written(runTime.timePath()/"uniform"/"particles");
-    const fileName given
-    (
-        runTime.globalPath()/runTime.timeName()/"particles"
-    );
-    fileName file;
-    dictionary dict;
-    if (Pstream::master())
-    {
-        file = isFile(written) ? written : given;
-        if (!isFile(file))
-        {
-            FatalErrorInFunction
-                << "no particle file " << written << " nor " << given << nl
-                << "    Place particles with placeParticles, or copy them"
-                << " from 0.orig" << exit(FatalError);
-        }
-        if (masterOnly)
-        {
-            into.readParticles(file);
-        }
-        else
-        {
-            dict = particleFileReader::read(file);
-        }
-    }
-    Pstream::scatter(file);
-    if (!masterOnly)
-    {
-        Pstream::scatter(dict);
-        into.readParticles(dict, file);
-    }
-    return file;
-}
-
-
-Foam::autoPtr<Foam::granularSystem>
-Foam::dlmfdCoupling::sceneWithoutParticles(const sceneEffects& effects) const
-{
-    auto scene = autoPtr<granularSystem>::New
-    (
-        IOdictionary(constantDict(mesh_, "particleProperties")),
-        IOdictionary(constantDict(mesh_, "collisionProperties")),
-        effects
-    );
-    scene->addWallPatches(mesh_);
-    scene->readGravity(mesh_);
-    scene->setGravity(Zero);
-    return scene;
-}
-
-
 void Foam::dlmfdCoupling::checkPlanarParticles(const fileName& file) const
 {
     if (mesh_.nSolutionD() != 2)
@@ -208,7 +126,7 @@ void Foam::dlmfdCoupling::checkPlanarParticles(const fileName& file) const
     const scalar zMin = mesh_.bounds().min().z();
     const scalar zMax = mesh_.bounds().max().z();
     problemList problems;
-    const granularSystem& all = scene();
+    const granularSystem& all = distribution_->scene();
     for (label i = 0; i < all.size(); ++i)
     {
         const rigidParticle& p = all.particle(i);
@@ -239,51 +157,6 @@ void Foam::dlmfdCoupling::checkPlanarParticles(const fileName& file) const
             << file << ": " << problems.size() << " particle(s) do not fit"
             << " the 2D mesh (one cell deep along z):" << nl
             << problems.str().c_str() << exit(FatalError);
-    }
-}
-
-
-void Foam::dlmfdCoupling::broadcastState()
-{
-    if (!Pstream::parRun())
-    {
-        return;
-    }
-    constexpr label nValues = 13;
-    const label n = granular_.size();
-    scalarList state(nValues*n);
-    if (Pstream::master())
-    {
-        for (label i = 0; i < n; ++i)
-        {
-            const rigidParticle& p = granular_.particle(i);
-            scalar* v = &state[nValues*i];
-            const quaternion& q = p.orientation();
-            for (direction d = 0; d < vector::nComponents; ++d)
-            {
-                v[d] = p.position()[d];
-                v[3 + d] = q.v()[d];
-                v[7 + d] = p.velocity()[d];
-                v[10 + d] = p.omega()[d];
-            }
-            v[6] = q.w();
-        }
-    }
-    Pstream::scatter(state);
-    ++costs_.nStateSteps;
-    if (!Pstream::master())
-    {
-        costs_.stateMessages += 1;
-        costs_.stateBytes += state.byteSize();
-        for (label i = 0; i < n; ++i)
-        {
-            rigidParticle& p = granular_.particle(i);
-            const scalar* v = &state[nValues*i];
-            p.setPosition(point(v[0], v[1], v[2]));
-            p.restoreOrientation(quaternion(v[6], vector(v[3], v[4], v[5])));
-            p.setVelocity(vector(v[7], v[8], v[9]));
-            p.setOmega(vector(v[10], v[11], v[12]));
-        }
     }
 }
 
@@ -342,7 +215,7 @@ void Foam::dlmfdCoupling::reportScene(const fileName& particleFile) const
     {
         const IOdictionary transport
         (
-            constantDict(mesh_, "transportProperties")
+            dlmfdConstantDict(mesh_, "transportProperties")
         );
         if (transport.get<word>("transportModel") == "Newtonian")
         {
@@ -355,7 +228,7 @@ void Foam::dlmfdCoupling::reportScene(const fileName& particleFile) const
     Info<< "DLM/FD: " << nParticles_ << " particles from "
         << particleFile << ", fluid density " << rhoFluid_ << " kg/m^3"
         << nl;
-    const granularSystem& all = scene();
+    const granularSystem& all = distribution_->scene();
     for (label i = 0; i < all.size(); ++i)
     {
         const rigidParticle& p = all.particle(i);
@@ -385,7 +258,7 @@ void Foam::dlmfdCoupling::reportScene(const fileName& particleFile) const
         << "    coupling: " << fd_.describe().c_str() << nl
         << "    periods " << fd_.period() << " m (0: not periodic); "
         << (Pstream::parRun() ? "granular step on " : "")
-        << (owned_ ? "every one of " : Pstream::parRun() ? "the master of " : "")
+        << (distribution_->bodiesPerRank() ? "every one of " : Pstream::parRun() ? "the master of " : "")
         << (Pstream::parRun() ? Foam::name(Pstream::nProcs()) + " ranks" : "serial")
         << nl;
     all.effects().report(Info);
@@ -399,18 +272,18 @@ void Foam::dlmfdCoupling::openSeries()
     // on several ranks each rank's own particles in its processor folder,
     // each row led by the time index and the particle's global index (what
     // mergeParticleSeries sorts by to make the master's file)
-    if (Pstream::master() || seriesPerRank())
+    if (Pstream::master() || distribution_->writesPerRank())
     {
         const fileName dir
         (
-            (seriesPerRank() ? mesh_.time().path() : mesh_.time().globalPath())
+            (distribution_->writesPerRank() ? mesh_.time().path() : mesh_.time().globalPath())
            /"postProcessing"/"dlmfdParticles"/mesh_.time().timeName()
         );
         mkDir(dir);
         output_.series.reset(new OFstream(dir/"particles.dat"));
         output_.series().precision(10);
         output_.series()
-            << (seriesPerRank() ? "# timeIndex globalIndex " : "# ")
+            << (distribution_->writesPerRank() ? "# timeIndex globalIndex " : "# ")
             << "time id x y z qw qx qy qz Ux Uy Uz omegax omegay omegaz"
             << " Fhx Fhy Fhz Thx Thy Thz Fcx Fcy Fcz Tcx Tcy Tcz"
             << "  (SI units, world frame)" << nl;
@@ -427,7 +300,7 @@ Foam::dlmfdCoupling::dlmfdCoupling
 )
 :
     mesh_(mesh),
-    properties_(constantDict(mesh, "dlmfdProperties")),
+    properties_(dlmfdConstantDict(mesh, "dlmfdProperties")),
     rhoFluid_
     (
         granularInput::positive
@@ -438,13 +311,11 @@ Foam::dlmfdCoupling::dlmfdCoupling
     g_(Zero),
     granular_
     (
-        IOdictionary(constantDict(mesh, "particleProperties")),
-        IOdictionary(constantDict(mesh, "collisionProperties")),
+        IOdictionary(dlmfdConstantDict(mesh, "particleProperties")),
+        IOdictionary(dlmfdConstantDict(mesh, "collisionProperties")),
         effects
     ),
-    ownedScene_(),
     nParticles_(0),
-    owned_(),
     fd_
     (
         mesh,
@@ -460,7 +331,8 @@ Foam::dlmfdCoupling::dlmfdCoupling
         mesh.time().value()
     ),
     costs_(),
-    outer_()
+    outer_(),
+    distribution_()
 {
     checkSettings();
 
@@ -477,24 +349,14 @@ Foam::dlmfdCoupling::dlmfdCoupling
     // Periodic directions, as the mesh's cyclics and the domain say
     setPeriodicity();
 
-    // With owned particles the master alone reads the scene, into ownedScene_.whole,
-    // and hands each rank its own particles and those near it (setOwned)
-    if (granular_.ownedDistribution())
-    {
-        ownedScene_.whole = sceneWithoutParticles(effects);
-    }
-    const fileName particleFile
-    (
-        ownedScene_.whole.valid()
-      ? readParticles(*ownedScene_.whole, true)
-      : readParticles(granular_)
-    );
-    nParticles_ = returnReduce(scene().size(), maxOp<label>());
+    // The scene of the current time, read by the master, and handed out
+    // once checked (with owned particles each rank its own and those near
+    // it)
+    distribution_ = particleDistribution::New(mesh_, granular_, fd_, costs_, g_);
+    const fileName particleFile(distribution_->readScene(effects));
+    nParticles_ = returnReduce(distribution_->scene().size(), maxOp<label>());
     checkPlanarParticles(particleFile);
-    if (ownedScene_.whole.valid())
-    {
-        setOwned(effects);
-    }
+    distribution_->distribute(effects);
 
     // The multipliers' force density (and the ghost cells' deviations)
     // belong with the particles the solver wrote at this time: with
@@ -526,14 +388,10 @@ void Foam::dlmfdCoupling::write()
     {
         return;
     }
-    if (owned_)
-    {
-        // The states and the contact histories from their owners
-        owned_->gatherScene(Pstream::master() ? ownedScene_.whole.get() : nullptr);
-    }
+    distribution_->gatherScene();
     if (Pstream::master())
     {
-        scene().writeParticles(runTime.timePath()/"uniform");
+        distribution_->scene().writeParticles(runTime.timePath()/"uniform");
     }
     writeVTK();
 }
@@ -547,29 +405,13 @@ void Foam::dlmfdCoupling::writeVTK()
     {
         runTime.timeIndex() > 0 ? runTime.deltaTValue() : 0, &Fh_, &Th_
     };
-    if (seriesPerRank())
-    {
-        output_.vtk.writePieces(*ownedScene_.part, runTime.value(), runTime.timeIndex(), given);
-    }
-    else if (Pstream::master())
-    {
-        output_.vtk.write(scene(), runTime.value(), runTime.timeIndex(), given);
-    }
+    distribution_->writeVTK(output_.vtk, given);
 }
 
 
 Foam::string Foam::dlmfdCoupling::costLineNote() const
 {
-    if (!seriesPerRank())
-    {
-        return string();
-    }
-    const Pair<scalar> work = owned_->workPerRank();
-    return
-        "; granular work per rank (less its exchanges) max/mean "
-      + Foam::name(work.first()/max(work.second(), VSMALL))
-      + " (max " + Foam::name(work.first()) + " s, mean "
-      + Foam::name(work.second()) + " s)";
+    return distribution_->costLineNote();
 }
 
 
@@ -601,7 +443,7 @@ void Foam::dlmfdCoupling::reportExchange() const
     const scalar nSteps = max(costs_.nStateSteps, label(1));
     line("state messages per step", costs_.stateMessages, nSteps);
     line("state bytes per step ", costs_.stateBytes, nSteps);
-    if (owned_)
+    if (distribution_->bodiesPerRank())
     {
         line("particles held per step", costs_.mirrorParticles, nSteps);
     }

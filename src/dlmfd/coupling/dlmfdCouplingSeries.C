@@ -11,63 +11,15 @@ License
 
 Description
     The particles' time series of Foam::dlmfdCoupling: a row per particle
-    and step written (the master's whole scene, or with owned particles each
-    rank's own), and the hydrodynamic forces handed to a particle's new
-    owner before its row.
+    and step written (the master's whole scene, or with owned particles on
+    several ranks each rank's own).
 
 \*---------------------------------------------------------------------------*/
 
 #include "dlmfdCoupling.H"
 #include "Time.H"
-#include "PstreamBuffers.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-void Foam::dlmfdCoupling::handOverForces()
-{
-    // A particle whose centre crossed into another box in the granular
-    // step has a new owner, which writes its row: the forces go there from
-    // the rank that took its result (its owner at the step's start)
-    const label self = Pstream::myProcNo();
-    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
-    List<DynamicList<label>> moved(Pstream::nProcs());
-    for (const labelPair& gr : owned_->lastDepartures()[0])
-    {
-        moved[gr.second()].append(gr.first());
-    }
-    forAll(moved, q)
-    {
-        if (moved[q].size())
-        {
-            List<vector> forces(2*moved[q].size());
-            forAll(moved[q], k)
-            {
-                forces[2*k] = Fh_[moved[q][k]];
-                forces[2*k + 1] = Th_[moved[q][k]];
-            }
-            UOPstream os(q, buffers);
-            os << labelList(moved[q]) << forces;
-        }
-    }
-    labelList recvSizes;
-    buffers.finishedSends(recvSizes);
-    forAll(recvSizes, q)
-    {
-        if (q != self && recvSizes[q] > 0)
-        {
-            UIPstream is(q, buffers);
-            labelList particles;
-            List<vector> forces;
-            is >> particles >> forces;
-            forAll(particles, k)
-            {
-                Fh_[particles[k]] = forces[2*k];
-                Th_[particles[k]] = forces[2*k + 1];
-            }
-        }
-    }
-}
-
 
 void Foam::dlmfdCoupling::writeSeriesRows()
 {
@@ -83,7 +35,7 @@ void Foam::dlmfdCoupling::writeSeriesRows()
     // (i: the global index)
     const auto row = [&](const label i)
     {
-        const rigidParticle& p = granular_.particle(mirrorPlace(i));
+        const rigidParticle& p = granular_.particle(distribution_->place(i));
         const quaternion& q = p.orientation();
         const point& x = p.position();
         const vector& V = p.velocity();
@@ -92,7 +44,7 @@ void Foam::dlmfdCoupling::writeSeriesRows()
         // impulse of the granular step over its length
         const vector Fc(p.contactImpulse()/dt);
         const vector Tc(p.contactAngularImpulse()/dt);
-        os  << t << ' ' << granular_.id(mirrorPlace(i)) << ' '
+        os  << t << ' ' << granular_.id(distribution_->place(i)) << ' '
             << x.x() << ' ' << x.y() << ' ' << x.z() << ' '
             << q.w() << ' ' << q.v().x() << ' ' << q.v().y() << ' '
             << q.v().z() << ' '
@@ -104,18 +56,13 @@ void Foam::dlmfdCoupling::writeSeriesRows()
             << Tc.x() << ' ' << Tc.y() << ' ' << Tc.z()
             << nl;
     };
-    if (seriesPerRank())
+    if (distribution_->writesPerRank())
     {
-        const granularSystem& part = *ownedScene_.part;
         const label timeIndex = mesh_.time().timeIndex();
-        for (label k = 0; k < part.size(); ++k)
+        for (const label i : distribution_->ownParticles())
         {
-            if (!part.ghost(k))
-            {
-                const label i = part.globalIndex(k);
-                os  << timeIndex << ' ' << i << ' ';
-                row(i);
-            }
+            os  << timeIndex << ' ' << i << ' ';
+            row(i);
         }
     }
     else

@@ -45,9 +45,8 @@ Foam::List<Foam::fictitiousDomain::body> Foam::dlmfdCoupling::predictedBodies
         omega0[k] = p.omega();
         b.shape = &p.shape();
         b.index = granular_.globalIndex(k);
-        // With owned particles the owner takes the body's result (the
-        // box its centre is in, as the granular step's migration decides)
-        b.resultRank = owned_ ? ownedScene_.boxes->rankOf(p.position()) : 0;
+        // (the master, or with owned particles the owner)
+        b.resultRank = distribution_->resultRank(p);
         b.R = p.R();
         b.free = p.motion() == motionKind::free;
         b.rotates = p.rotates();
@@ -196,7 +195,7 @@ void Foam::dlmfdCoupling::correct(volVectorField& U)
     vectorField V0, omega0;
     const List<fictitiousDomain::body> bodies(predictedBodies(V0, omega0));
     List<fictitiousDomain::body> held;
-    const UList<fictitiousDomain::body>& solved = bodiesHeld(bodies, held);
+    const UList<fictitiousDomain::body>& solved = distribution_->bodiesHeld(bodies, held);
 
     const label index = mesh_.time().timeIndex();
     if (outer_.correctedIndex != index)
@@ -236,10 +235,7 @@ void Foam::dlmfdCoupling::correct(volVectorField& U)
         }
         outer_.lastV[place] = V;
     }
-    if (owned_)
-    {
-        reduce(change, maxOp<scalar>());
-    }
+    change = distribution_->largestOverResults(change);
 
     Info<< "DLM/FD outer corrector " << outer_.nCorrections << ": ";
     if (outer_.nCorrections > 1)
@@ -274,7 +270,7 @@ void Foam::dlmfdCoupling::payFluidGain
     treatment.fluidGain
     (
         U, mesh_.time().deltaTValue(), ddtCoeff(U), fd_, solved,
-        bool(owned_), nParticles_, gain, gainMoment
+        distribution_->bodiesPerRank(), nParticles_, gain, gainMoment
     );
     fd_.addOwed(bodies, gain, gainMoment);
 }
@@ -289,17 +285,14 @@ void Foam::dlmfdCoupling::takeResults
     const vectorField& omega0,
     List<vector>& V3s,
     List<vector>& omega3s,
-    stepReport& report
+    dlmfdStepReport& report
 )
 {
     const scalar dt = mesh_.time().deltaTValue();
     // (by place in bodies, as V0)
     const bodyPlaces places(bodies);
-    if (owned_)
-    {
-        V3s.setSize(bodies.size());
-        omega3s.setSize(bodies.size());
-    }
+    V3s.setSize(bodies.size());
+    omega3s.setSize(bodies.size());
     forAll(solved, k)
     {
         const fictitiousDomain::body& b = solved[k];
@@ -328,59 +321,10 @@ void Foam::dlmfdCoupling::takeResults
         Th_[i] =
             rhoFluid_*((J & (omega3 - omega0[place]))/dt - r.sumMoment);
 
-        if (owned_)
-        {
-            // (set on this owner's part: evolveOwned)
-            V3s[place] = V3;
-            omega3s[place] = omega3;
-        }
-        else if (b.free)
-        {
-            rigidParticle& p = granular_.particle(i);
-            p.setVelocity(V3);
-            p.setOmega(omega3);
-        }
+        // (set on the particles by the granular step)
+        V3s[place] = V3;
+        omega3s[place] = omega3;
     }
-}
-
-
-void Foam::dlmfdCoupling::granularCorrector
-(
-    const List<fictitiousDomain::body>& bodies,
-    List<vector>& V3s,
-    List<vector>& omega3s,
-    stepReport& report,
-    clockTime& clock
-)
-{
-    if (!owned_)
-    {
-        if (Pstream::master())
-        {
-            report.nSub = granular_.evolve(mesh_.time().deltaTValue());
-            granular_.checkHealth(mesh_.time().value());
-        }
-        costs_.granularSeconds += clock.timeIncrement();
-
-        // The new state to every rank
-        broadcastState();
-        costs_.commSeconds += clock.timeIncrement();
-        return;
-    }
-    // The log's sums and extremes over the owners, on the master that
-    // prints them (integers and maxima: the master-side step's numbers
-    // exactly)
-    labelList counts({report.nPoints, report.nSurface, report.nDropped});
-    Pstream::listCombineGather(counts, plusEqOp<label>());
-    scalarList extremes({report.maxError, report.lastChange});
-    Pstream::listCombineGather(extremes, maxEqOp<scalar>());
-    report.nPoints = counts[0];
-    report.nSurface = counts[1];
-    report.nDropped = counts[2];
-    report.maxError = extremes[0];
-    report.lastChange = extremes[1];
-    report.nSub = evolveOwned(bodies, V3s, omega3s);
-    costs_.granularSeconds += clock.timeIncrement();
 }
 
 
@@ -406,7 +350,7 @@ void Foam::dlmfdCoupling::carryInteriorFluid
             continue;
         }
         const label g = bodyPlaces::global(solved, k);
-        const label place = mirrorPlace(g);
+        const label place = distribution_->place(g);
         if (place < 0)
         {
             FatalErrorInFunction
@@ -432,10 +376,9 @@ void Foam::dlmfdCoupling::carryInteriorFluid
 }
 
 
-void Foam::dlmfdCoupling::logStep(const stepReport& report) const
+void Foam::dlmfdCoupling::logStep(const dlmfdStepReport& report) const
 {
-    const granularSystem::statistics s =
-        owned_ ? owned_->stats() : granular_.stats();
+    const granularSystem::statistics s = distribution_->stats();
     Info<< "DLM/FD: " << nParticles_ << " particles, " << report.nPoints
         << " points";
     // Only a treatment that reads the fluid near the surface fits it
@@ -477,8 +420,8 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
     vectorField V0, omega0;
     const List<fictitiousDomain::body> bodies(predictedBodies(V0, omega0));
     List<fictitiousDomain::body> held;
-    const UList<fictitiousDomain::body>& solved = bodiesHeld(bodies, held);
-    stepReport report;
+    const UList<fictitiousDomain::body>& solved = distribution_->bodiesHeld(bodies, held);
+    dlmfdStepReport report;
     report.corrected = outer_.correctedIndex == mesh_.time().timeIndex();
     if (report.corrected)
     {
@@ -499,7 +442,7 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
     // dt
     List<vector> V3s, omega3s;
     takeResults(bodies, solved, res, V0, omega0, V3s, omega3s, report);
-    granularCorrector(bodies, V3s, omega3s, report, clock);
+    distribution_->granularStep(bodies, V3s, omega3s, report, clock);
 
     carryInteriorFluid(U, solved, res);
     costs_.fdSeconds += clock.timeIncrement();
@@ -507,9 +450,9 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
     logStep(report);
     if (mesh_.time().timeIndex() % output_.seriesInterval == 0)
     {
-        if (seriesPerRank())
+        if (distribution_->writesPerRank())
         {
-            handOverForces();
+            distribution_->handOverForces(Fh_, Th_);
         }
         writeSeriesRows();
     }
