@@ -258,8 +258,14 @@ void Foam::dlmfdCoupling::reportScene(const fileName& particleFile) const
         << "    coupling: " << fd_.describe().c_str() << nl
         << "    periods " << fd_.period() << " m (0: not periodic); "
         << (Pstream::parRun() ? "granular step on " : "")
-        << (distribution_->bodiesPerRank() ? "every one of " : Pstream::parRun() ? "the master of " : "")
-        << (Pstream::parRun() ? Foam::name(Pstream::nProcs()) + " ranks" : "serial")
+        << (
+               distribution_->bodiesPerRank() ? "every one of "
+             : Pstream::parRun() ? "the master of " : ""
+           )
+        << (
+               Pstream::parRun()
+             ? Foam::name(Pstream::nProcs()) + " ranks" : "serial"
+           )
         << nl;
     all.effects().report(Info);
     Info<< endl;
@@ -276,14 +282,20 @@ void Foam::dlmfdCoupling::openSeries()
     {
         const fileName dir
         (
-            (distribution_->writesPerRank() ? mesh_.time().path() : mesh_.time().globalPath())
+            (
+                distribution_->writesPerRank()
+              ? mesh_.time().path() : mesh_.time().globalPath()
+            )
            /"postProcessing"/"dlmfdParticles"/mesh_.time().timeName()
         );
         mkDir(dir);
         output_.series.reset(new OFstream(dir/"particles.dat"));
         output_.series().precision(10);
         output_.series()
-            << (distribution_->writesPerRank() ? "# timeIndex globalIndex " : "# ")
+            << (
+                   distribution_->writesPerRank()
+                 ? "# timeIndex globalIndex " : "# "
+               )
             << "time id x y z qw qx qy qz Ux Uy Uz omegax omegay omegaz"
             << " Fhx Fhy Fhz Thx Thy Thz Fcx Fcy Fcz Tcx Tcy Tcz"
             << "  (SI units, world frame)" << nl;
@@ -352,9 +364,11 @@ Foam::dlmfdCoupling::dlmfdCoupling
     // The scene of the current time, read by the master, and handed out
     // once checked (with owned particles each rank its own and those near
     // it)
-    distribution_ = particleDistribution::New(mesh_, granular_, fd_, costs_, g_);
+    distribution_ =
+        particleDistribution::New(mesh_, granular_, fd_, costs_, g_);
     const fileName particleFile(distribution_->readScene(effects));
-    nParticles_ = returnReduce(distribution_->scene().size(), maxOp<label>());
+    nParticles_ =
+        returnReduce(distribution_->scene().size(), maxOp<label>());
     checkPlanarParticles(particleFile);
     distribution_->distribute(effects);
 

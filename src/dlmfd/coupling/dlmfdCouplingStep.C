@@ -195,7 +195,8 @@ void Foam::dlmfdCoupling::correct(volVectorField& U)
     vectorField V0, omega0;
     const List<fictitiousDomain::body> bodies(predictedBodies(V0, omega0));
     List<fictitiousDomain::body> held;
-    const UList<fictitiousDomain::body>& solved = distribution_->bodiesHeld(bodies, held);
+    const UList<fictitiousDomain::body>& solved =
+        distribution_->bodiesHeld(bodies, held);
 
     const label index = mesh_.time().timeIndex();
     if (outer_.correctedIndex != index)
@@ -291,8 +292,10 @@ void Foam::dlmfdCoupling::takeResults
     const scalar dt = mesh_.time().deltaTValue();
     // (by place in bodies, as V0)
     const bodyPlaces places(bodies);
-    V3s.setSize(bodies.size());
-    omega3s.setSize(bodies.size());
+    // (a body whose result this rank did not take keeps no velocity: the
+    // granular step sets only the taken ones)
+    V3s.setSize(bodies.size(), vector::max);
+    omega3s.setSize(bodies.size(), vector::max);
     forAll(solved, k)
     {
         const fictitiousDomain::body& b = solved[k];
@@ -420,7 +423,8 @@ void Foam::dlmfdCoupling::evolve(volVectorField& U)
     vectorField V0, omega0;
     const List<fictitiousDomain::body> bodies(predictedBodies(V0, omega0));
     List<fictitiousDomain::body> held;
-    const UList<fictitiousDomain::body>& solved = distribution_->bodiesHeld(bodies, held);
+    const UList<fictitiousDomain::body>& solved =
+        distribution_->bodiesHeld(bodies, held);
     dlmfdStepReport report;
     report.corrected = outer_.correctedIndex == mesh_.time().timeIndex();
     if (report.corrected)

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "particleDistribution.H"
+#include "IOdictionary.H"
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
@@ -24,21 +25,25 @@ Foam::autoPtr<Foam::particleDistribution> Foam::particleDistribution::New
     const vector& g
 )
 {
-    // (constant/collisionProperties' particleDistribution, which the
-    // collision settings read and check, naming the file and the values
-    // allowed: granularFoam reads it too)
-    const word modelType(particles.ownedDistribution() ? "owned" : "master");
+    // The collision settings read and check the keyword too (granularFoam
+    // reads it without a mesh); here it names the model
+    const IOdictionary collisions(dlmfdConstantDict(mesh, "collisionProperties"));
+    const word modelType
+    (
+        collisions.getOrDefault<word>("particleDistribution", "master")
+    );
 
     auto cstrIter = couplingConstructorTablePtr_->cfind(modelType);
 
     if (!cstrIter.found())
     {
-        FatalErrorInLookup
+        FatalIOErrorInLookup
         (
+            collisions,
             "particleDistribution",
             modelType,
             *couplingConstructorTablePtr_
-        ) << exit(FatalError);
+        ) << exit(FatalIOError);
     }
 
     return autoPtr<particleDistribution>

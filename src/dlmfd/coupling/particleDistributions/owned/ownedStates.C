@@ -10,20 +10,21 @@ License
     option) any later version. See <http://www.gnu.org/licenses/>.
 
 Description
-    Foam::ownedParticleDistribution's step: the owners' granular step and
+    Foam::particleDistributions::owned's step: the owners' granular step and
     the new states sent to the ranks near each particle.
 
 \*---------------------------------------------------------------------------*/
 
-#include "ownedParticleDistribution.H"
+#include "owned.H"
 #include "bodyPlaces.H"
 #include "Time.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-
-
-Foam::labelList Foam::ownedParticleDistribution::statePartners(const scalar reach) const
+Foam::labelList Foam::particleDistributions::owned::statePartners
+(
+    const scalar reach
+) const
 {
     // The ranks whose cells come near this rank's box, or whose box this
     // rank's cells or box come near (each side finds the other)
@@ -50,9 +51,7 @@ Foam::labelList Foam::ownedParticleDistribution::statePartners(const scalar reac
 }
 
 
-
-
-void Foam::ownedParticleDistribution::sendStates
+void Foam::particleDistributions::owned::sendStates
 (
     const List<fictitiousDomain::body>& bodies
 )
@@ -147,9 +146,7 @@ void Foam::ownedParticleDistribution::sendStates
 }
 
 
-
-
-Foam::label Foam::ownedParticleDistribution::evolveOwned
+Foam::label Foam::particleDistributions::owned::evolveOwned
 (
     const List<fictitiousDomain::body>& bodies,
     const List<vector>& V3,

@@ -11,7 +11,7 @@ License
 
 \*---------------------------------------------------------------------------*/
 
-#include "masterParticleDistribution.H"
+#include "master.H"
 #include "addToRunTimeSelectionTable.H"
 #include "Time.H"
 
@@ -19,19 +19,22 @@ License
 
 namespace Foam
 {
-    defineTypeNameAndDebug(masterParticleDistribution, 0);
+namespace particleDistributions
+{
+    defineTypeNameAndDebug(master, 0);
     addToRunTimeSelectionTable
     (
         particleDistribution,
-        masterParticleDistribution,
+        master,
         coupling
     );
+}
 }
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::masterParticleDistribution::broadcastState()
+void Foam::particleDistributions::master::broadcastState()
 {
     if (!Pstream::parRun())
     {
@@ -78,7 +81,7 @@ void Foam::masterParticleDistribution::broadcastState()
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::masterParticleDistribution::masterParticleDistribution
+Foam::particleDistributions::master::master
 (
     const fvMesh& mesh,
     granularSystem& particles,
@@ -93,7 +96,7 @@ Foam::masterParticleDistribution::masterParticleDistribution
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::fileName Foam::masterParticleDistribution::readScene
+Foam::fileName Foam::particleDistributions::master::readScene
 (
     const sceneEffects&
 )
@@ -102,7 +105,7 @@ Foam::fileName Foam::masterParticleDistribution::readScene
 }
 
 
-void Foam::masterParticleDistribution::granularStep
+void Foam::particleDistributions::master::granularStep
 (
     const List<fictitiousDomain::body>& bodies,
     const List<vector>& V3,

@@ -11,7 +11,7 @@ License
 
 \*---------------------------------------------------------------------------*/
 
-#include "ownedParticleDistribution.H"
+#include "owned.H"
 #include "bodyPlaces.H"
 #include "meshChangeReach.H"
 #include "addToRunTimeSelectionTable.H"
@@ -22,20 +22,23 @@ License
 
 namespace Foam
 {
-    defineTypeNameAndDebug(ownedParticleDistribution, 0);
+namespace particleDistributions
+{
+    defineTypeNameAndDebug(owned, 0);
     addToRunTimeSelectionTable
     (
         particleDistribution,
-        ownedParticleDistribution,
+        owned,
         coupling
     );
+}
 }
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 Foam::autoPtr<Foam::granularSystem>
-Foam::ownedParticleDistribution::sceneWithoutParticles
+Foam::particleDistributions::owned::sceneWithoutParticles
 (
     const sceneEffects& effects
 ) const
@@ -53,9 +56,7 @@ Foam::ownedParticleDistribution::sceneWithoutParticles
 }
 
 
-
-
-void Foam::ownedParticleDistribution::setMirror
+void Foam::particleDistributions::owned::setMirror
 (
     const UList<granularSystem::particleRecord>& records
 )
@@ -69,9 +70,7 @@ void Foam::ownedParticleDistribution::setMirror
 }
 
 
-
-
-const Foam::fictitiousDomain::body& Foam::ownedParticleDistribution::ownBody
+const Foam::fictitiousDomain::body& Foam::particleDistributions::owned::ownBody
 (
     const UList<fictitiousDomain::body>& bodies,
     const bodyPlaces& places,
@@ -94,9 +93,7 @@ const Foam::fictitiousDomain::body& Foam::ownedParticleDistribution::ownBody
 }
 
 
-
-
-const Foam::meshChangeReach* Foam::ownedParticleDistribution::meshChange() const
+const Foam::meshChangeReach* Foam::particleDistributions::owned::meshChange() const
 {
     return
         mesh_.dynamic()
@@ -105,17 +102,16 @@ const Foam::meshChangeReach* Foam::ownedParticleDistribution::meshChange() const
 }
 
 
-
-
-bool Foam::ownedParticleDistribution::everyStateEverywhere() const
+bool Foam::particleDistributions::owned::everyStateEverywhere() const
 {
     return mesh_.dynamic() && !meshChange();
 }
 
 
-
-
-Foam::scalar Foam::ownedParticleDistribution::stateReach(const rigidParticle& p) const
+Foam::scalar Foam::particleDistributions::owned::stateReach
+(
+    const rigidParticle& p
+) const
 {
     const scalar hold = fd_.holderReach(p.shape());
     const meshChangeReach* change = meshChange();
@@ -137,9 +133,8 @@ Foam::scalar Foam::ownedParticleDistribution::stateReach(const rigidParticle& p)
 }
 
 
-
-
-Foam::List<Foam::labelList> Foam::ownedParticleDistribution::destinationsAtStart() const
+Foam::List<Foam::labelList>
+Foam::particleDistributions::owned::destinationsAtStart() const
 {
     // What sendStates sends after a step: a particle goes to the ranks
     // whose cells come within its reach (stateReach) and twice a step's
@@ -181,9 +176,7 @@ Foam::List<Foam::labelList> Foam::ownedParticleDistribution::destinationsAtStart
 }
 
 
-
-
-Foam::scalar Foam::ownedParticleDistribution::nextStepTravel
+Foam::scalar Foam::particleDistributions::owned::nextStepTravel
 (
     const rigidParticle& p
 ) const
@@ -195,7 +188,7 @@ Foam::scalar Foam::ownedParticleDistribution::nextStepTravel
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::ownedParticleDistribution::ownedParticleDistribution
+Foam::particleDistributions::owned::owned
 (
     const fvMesh& mesh,
     granularSystem& particles,
@@ -216,7 +209,7 @@ Foam::ownedParticleDistribution::ownedParticleDistribution
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::fileName Foam::ownedParticleDistribution::readScene
+Foam::fileName Foam::particleDistributions::owned::readScene
 (
     const sceneEffects& effects
 )
@@ -226,7 +219,7 @@ Foam::fileName Foam::ownedParticleDistribution::readScene
 }
 
 
-void Foam::ownedParticleDistribution::distribute(const sceneEffects& effects)
+void Foam::particleDistributions::owned::distribute(const sceneEffects& effects)
 {
     // The boxes: the mesh's decomposition where its ranks' cells make a
     // grid of boxes numbered x fastest (simple, hierarchical xyz), so that
@@ -268,10 +261,10 @@ void Foam::ownedParticleDistribution::distribute(const sceneEffects& effects)
         ownerBoxes[r] = boxes_->bounds(r);
     }
     scalar largestRadius = 0;
-    for (label i = 0; i < (*whole_).size(); ++i)
+    for (label i = 0; i < whole_->size(); ++i)
     {
         largestRadius =
-            max(largestRadius, (*whole_).particle(i).shape().boundingRadius());
+            max(largestRadius, whole_->particle(i).shape().boundingRadius());
     }
     Pstream::scatter(largestRadius);
     fd_.setBodiesPerRank(std::move(ownerBoxes), largestRadius);
@@ -315,10 +308,8 @@ void Foam::ownedParticleDistribution::distribute(const sceneEffects& effects)
 }
 
 
-
-
 const Foam::UList<Foam::fictitiousDomain::body>&
-Foam::ownedParticleDistribution::bodiesHeld
+Foam::particleDistributions::owned::bodiesHeld
 (
     const List<fictitiousDomain::body>& bodies,
     List<fictitiousDomain::body>& held
@@ -339,7 +330,7 @@ Foam::ownedParticleDistribution::bodiesHeld
 }
 
 
-void Foam::ownedParticleDistribution::granularStep
+void Foam::particleDistributions::owned::granularStep
 (
     const List<fictitiousDomain::body>& bodies,
     const List<vector>& V3,
@@ -365,7 +356,7 @@ void Foam::ownedParticleDistribution::granularStep
 }
 
 
-Foam::labelList Foam::ownedParticleDistribution::ownParticles() const
+Foam::labelList Foam::particleDistributions::owned::ownParticles() const
 {
     const granularSystem& part = *part_;
     DynamicList<label> own(part.size());
@@ -380,7 +371,7 @@ Foam::labelList Foam::ownedParticleDistribution::ownParticles() const
 }
 
 
-void Foam::ownedParticleDistribution::handOverForces
+void Foam::particleDistributions::owned::handOverForces
 (
     vectorField& Fh,
     vectorField& Th
@@ -430,14 +421,14 @@ void Foam::ownedParticleDistribution::handOverForces
 }
 
 
-void Foam::ownedParticleDistribution::gatherScene()
+void Foam::particleDistributions::owned::gatherScene()
 {
     // The states and the contact histories from their owners
     steps_->gatherScene(Pstream::master() ? whole_.get() : nullptr);
 }
 
 
-void Foam::ownedParticleDistribution::writeVTK
+void Foam::particleDistributions::owned::writeVTK
 (
     granularVTKWriter& vtk,
     const granularVTKWriter::loads& given
@@ -453,7 +444,7 @@ void Foam::ownedParticleDistribution::writeVTK
 }
 
 
-Foam::string Foam::ownedParticleDistribution::costLineNote() const
+Foam::string Foam::particleDistributions::owned::costLineNote() const
 {
     if (!writesPerRank())
     {
