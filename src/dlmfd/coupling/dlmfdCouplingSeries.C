@@ -35,7 +35,8 @@ void Foam::dlmfdCoupling::writeSeriesRows()
     // (i: the global index)
     const auto row = [&](const label i)
     {
-        const rigidParticle& p = granular_.particle(distribution_->place(i));
+        const label place = distribution_->place(i);
+        const rigidParticle& p = granular_.particle(place);
         const quaternion& q = p.orientation();
         const point& x = p.position();
         const vector& V = p.velocity();
@@ -44,7 +45,7 @@ void Foam::dlmfdCoupling::writeSeriesRows()
         // impulse of the granular step over its length
         const vector Fc(p.contactImpulse()/dt);
         const vector Tc(p.contactAngularImpulse()/dt);
-        os  << t << ' ' << granular_.id(distribution_->place(i)) << ' '
+        os  << t << ' ' << granular_.id(place) << ' '
             << x.x() << ' ' << x.y() << ' ' << x.z() << ' '
             << q.w() << ' ' << q.v().x() << ' ' << q.v().y() << ' '
             << q.v().z() << ' '
