@@ -37,6 +37,16 @@ namespace
         return os.str();
     }
 
+    // A number for a message: six digits whatever writePrecision the case
+    // sets (the default stream precision follows controlDict)
+    std::string num(const scalar v)
+    {
+        OStringStream os;
+        os.precision(6);
+        os << v;
+        return os.str();
+    }
+
     bool finite(const vector& v)
     {
         return std::isfinite(v.x() + v.y() + v.z());
@@ -104,6 +114,7 @@ void Foam::granularSystem::checkStart(const fileName& file)
         if (p.shape().planar() && (mag(q.v().x()) + mag(q.v().y()) > 1e-9))
         {
             OStringStream os;
+            os.precision(8);
             os  << "particle " << ids_[i] << " (planar shape "
                 << p.shape().name() << ") at " << str(x).c_str()
                 << " has orientation (" << q.w() << ' ' << q.v().x() << ' '
@@ -135,7 +146,8 @@ void Foam::granularSystem::checkStart(const fileName& file)
                 {
                     OStringStream os;
                     os  << describeContact(labelPair(i, -1 - w)).c_str()
-                        << " overlap by " << c.overlap/Deq_[i] << " D";
+                        << " overlap by " << num(c.overlap/Deq_[i]).c_str()
+                        << " D";
                     problems.add(os.str());
                 }
             }
@@ -164,7 +176,7 @@ void Foam::granularSystem::checkStart(const fileName& file)
             {
                 OStringStream os;
                 os  << describeContact(ij).c_str() << " overlap by "
-                    << c.overlap/D << " D (of the smaller)";
+                    << num(c.overlap/D).c_str() << " D (of the smaller)";
                 problems.add(os.str());
             }
         }
@@ -175,7 +187,8 @@ void Foam::granularSystem::checkStart(const fileName& file)
         FatalErrorInFunction
             << file << ": " << problems.size() << " problem(s) with the"
             << " particles' positions:" << nl << problems.str().c_str()
-            << "    Overlaps beyond overlapLimit = " << settings_.overlapLimit()
+            << "    Overlaps beyond overlapLimit = "
+            << num(settings_.overlapLimit()).c_str()
             << " D (collisionProperties) are refused: move the particles"
             << " apart (placeParticles keeps a gap), into the domain, or"
             << " turn planar ones about z only." << exit(FatalError);
