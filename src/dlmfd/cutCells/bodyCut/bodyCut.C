@@ -1,0 +1,572 @@
+/*---------------------------------------------------------------------------*\
+  dlmfdFoam: DLM/FD particle-resolved simulation of particulate flows
+-------------------------------------------------------------------------------
+License
+    This file is part of dlmfdFoam, an extension of OpenFOAM.
+
+    dlmfdFoam is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by the
+    Free Software Foundation, either version 3 of the License, or (at your
+    option) any later version. See <http://www.gnu.org/licenses/>.
+
+\*---------------------------------------------------------------------------*/
+
+#include "bodyCut.H"
+#include "cutPolygon.H"
+#include "sphere.H"
+#include "circle.H"
+#include "convexPolyhedron.H"
+#include "mathematicalConstants.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+    using namespace Foam;
+
+    //- A unit vector normal to n
+    vector normalTo(const vector& n)
+    {
+        const vector a = cmptMag(n);
+        const vector axis =
+            (a.x() <= a.y() && a.x() <= a.z()) ? vector(1, 0, 0)
+          : (a.y() <= a.z()) ? vector(0, 1, 0) : vector(0, 0, 1);
+        return normalised(n ^ axis);
+    }
+
+    //- The face's points, in its own order
+    List<point> facePolygon(const polyMesh& mesh, const label facei)
+    {
+        const face& f = mesh.faces()[facei];
+        List<point> poly(f.size());
+        forAll(f, i)
+        {
+            poly[i] = mesh.points()[f[i]];
+        }
+        return poly;
+    }
+
+    void extend(const UList<point>& ps, point& lo, point& hi)
+    {
+        for (const point& p : ps)
+        {
+            lo = min(lo, p);
+            hi = max(hi, p);
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::bodyCut::bodyCut
+(
+    const particleShape& shape,
+    const point& x,
+    const tensor& R
+)
+:
+    x_(x),
+    planar_(shape.planar()),
+    radius_(-1),
+    boundingRadius_(shape.boundingRadius()),
+    tol_(1e-12*(mag(x) + 2*shape.boundingRadius()))
+{
+    if (const auto* s = isA<particleShapes::sphere>(shape))
+    {
+        radius_ = s->radius();
+    }
+    else if (const auto* c = isA<particleShapes::circle>(shape))
+    {
+        radius_ = c->radius();
+    }
+    else if (const auto* poly = isA<particleShapes::convexPolyhedron>(shape))
+    {
+        const vectorField& n = poly->faceNormals();
+        const scalarField& d = poly->faceOffsets();
+        DynamicList<vector> normals;
+        DynamicList<scalar> offsets;
+        forAll(n, f)
+        {
+            const vector nw = R & n[f];
+            // A planar prism is bounded by its side faces only: the
+            // fictitious domain treats it as infinite along z
+            if (planar_ && mag(nw.z()) > 0.5)
+            {
+                continue;
+            }
+            normals.append(nw);
+            offsets.append(d[f] + (nw & x));
+        }
+        normals_.transfer(normals);
+        offsets_.transfer(offsets);
+        if (!planar_)
+        {
+            const faceList& fs = poly->faces();
+            faces_.setSize(fs.size());
+            forAll(fs, f)
+            {
+                faces_[f].setSize(fs[f].size());
+                forAll(fs[f], i)
+                {
+                    faces_[f][i] = x + (R & poly->points()[fs[f][i]]);
+                }
+            }
+        }
+    }
+    else
+    {
+        FatalErrorInFunction
+            << "shape " << shape.name() << " of type " << shape.type()
+            << " has no cut-cell geometry; known types: sphere, circle and"
+            << " the convex polyhedra and polygons" << exit(FatalError);
+    }
+}
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+bool Foam::bodyCut::mayMeet(const point& lo, const point& hi) const
+{
+    // The box's point nearest the centre, within the bounding radius?
+    scalar d2 = 0;
+    for (direction i = 0; i < (planar_ ? 2 : 3); ++i)
+    {
+        const scalar c = x_[i];
+        const scalar gap = max(max(lo[i] - c, c - hi[i]), scalar(0));
+        d2 += sqr(gap);
+    }
+    return d2 <= sqr(boundingRadius_ + tol_);
+}
+
+
+Foam::bodyCut::facePart Foam::bodyCut::polyhedronPart
+(
+    const UList<point>& poly
+) const
+{
+    work0_ = poly;
+    forAll(normals_, k)
+    {
+        cutPolygon::clip(work0_, normals_[k], offsets_[k], tol_, work1_);
+        work0_.transfer(work1_);
+        if (work0_.empty())
+        {
+            break;
+        }
+    }
+    vector S;
+    point c;
+    cutPolygon::areaAndCentroid(work0_, S, c);
+    return {mag(S), c};
+}
+
+
+Foam::bodyCut::facePart Foam::bodyCut::spherePart
+(
+    const UList<point>& poly,
+    const vector& S,
+    const point& centroid
+) const
+{
+    const vector n = S/mag(S);
+    const scalar h = ((centroid - x_) & n);
+    if (mag(h) >= radius_)
+    {
+        return {0, centroid};
+    }
+    const point foot = x_ + h*n;
+    const vector e1 = normalTo(n);
+    const vector e2 = n ^ e1;
+    List<vector2D> flat(poly.size());
+    forAll(poly, i)
+    {
+        const vector d = poly[i] - foot;
+        flat[i] = vector2D(d & e1, d & e2);
+    }
+    const cutPolygon::diskSection s =
+        cutPolygon::cutByDisk(flat, Foam::sqrt(sqr(radius_) - sqr(h)), 0);
+    if (s.area <= 0)
+    {
+        return {0, centroid};
+    }
+    const vector2D m = s.moment/s.area;
+    return {s.area, foot + m.x()*e1 + m.y()*e2};
+}
+
+
+Foam::bodyCut::facePart Foam::bodyCut::circlePart
+(
+    const UList<point>& poly,
+    const vector& S,
+    const point& centroid
+) const
+{
+    const vector n = S/mag(S);
+    if (mag(n.z()) > 1 - 1e-9)
+    {
+        // A face normal to z: the disk about the centre's foot
+        const point foot(x_.x(), x_.y(), centroid.z());
+        const vector e1(1, 0, 0);
+        const vector e2 = n ^ e1;
+        List<vector2D> flat(poly.size());
+        forAll(poly, i)
+        {
+            const vector d = poly[i] - foot;
+            flat[i] = vector2D(d & e1, d & e2);
+        }
+        const cutPolygon::diskSection s =
+            cutPolygon::cutByDisk(flat, radius_, 0);
+        if (s.area <= 0)
+        {
+            return {0, centroid};
+        }
+        const vector2D m = s.moment/s.area;
+        return {s.area, foot + m.x()*e1 + m.y()*e2};
+    }
+    if (mag(n.z()) < 1e-9)
+    {
+        // A face parallel to z: the strip the cylinder cuts from its plane
+        const scalar h = ((centroid - x_) & n);
+        if (mag(h) >= radius_)
+        {
+            return {0, centroid};
+        }
+        const vector t = normalised(vector(0, 0, 1) ^ n);
+        const scalar w = Foam::sqrt(sqr(radius_) - sqr(h));
+        cutPolygon::clip(poly, t, (t & x_) + w, tol_, work0_);
+        cutPolygon::clip(work0_, -t, -(t & x_) + w, tol_, work1_);
+        vector Sp;
+        point c;
+        cutPolygon::areaAndCentroid(work1_, Sp, c);
+        return {mag(Sp), c};
+    }
+    FatalErrorInFunction
+        << "a face with normal " << n << " is neither normal nor parallel"
+        << " to z; a circle's (2D) mesh has faces of those two kinds only"
+        << exit(FatalError);
+    return {0, centroid};
+}
+
+
+Foam::scalar Foam::bodyCut::polyhedronVolume
+(
+    const polyMesh& mesh,
+    const label celli
+) const
+{
+    const point& x0 = mesh.cellCentres()[celli];
+    const cell& c = mesh.cells()[celli];
+    List<vector> planeNormals(c.size());
+    List<scalar> planeOffsets(c.size());
+    scalar sum = 0;
+    forAll(c, i)
+    {
+        const label facei = c[i];
+        const scalar sgn = (mesh.faceOwner()[facei] == celli ? 1 : -1);
+        const List<point> poly = facePolygon(mesh, facei);
+        vector S;
+        point cf;
+        cutPolygon::areaAndCentroid(poly, S, cf);
+        planeNormals[i] = sgn*S/mag(S);
+        planeOffsets[i] = (planeNormals[i] & cf);
+
+        polyhedronPart(poly);
+        // polyhedronPart left the clipped polygon in work0_
+        vector Ss;
+        point cs;
+        cutPolygon::areaAndCentroid(work0_, Ss, cs);
+        sum += sgn*((cs - x0) & Ss);
+    }
+    forAll(faces_, k)
+    {
+        const vector& nk = normals_[k];
+        // A body face in the plane of a cell face with the same outward
+        // normal is that cell face's solid part, counted above
+        bool onCellFace = false;
+        forAll(planeNormals, i)
+        {
+            if ((nk & planeNormals[i]) > 1 - 1e-9)
+            {
+                bool inPlane = true;
+                for (const point& p : faces_[k])
+                {
+                    if (mag((planeNormals[i] & p) - planeOffsets[i]) > tol_)
+                    {
+                        inPlane = false;
+                        break;
+                    }
+                }
+                if (inPlane)
+                {
+                    onCellFace = true;
+                    break;
+                }
+            }
+        }
+        if (onCellFace)
+        {
+            continue;
+        }
+        work0_ = faces_[k];
+        forAll(planeNormals, i)
+        {
+            cutPolygon::clip
+            (
+                work0_, planeNormals[i], planeOffsets[i], tol_, work1_
+            );
+            work0_.transfer(work1_);
+            if (work0_.empty())
+            {
+                break;
+            }
+        }
+        vector Sk;
+        point ck;
+        cutPolygon::areaAndCentroid(work0_, Sk, ck);
+        sum += ((ck - x0) & Sk);
+    }
+    return sum/3;
+}
+
+
+Foam::scalar Foam::bodyCut::centreShare
+(
+    const UList<vector>& normals,
+    const UList<scalar>& heights,
+    const scalar tol
+) const
+{
+    DynamicList<vector> through;
+    forAll(heights, i)
+    {
+        if (heights[i] < -tol)
+        {
+            return 0;
+        }
+        if (heights[i] <= tol)
+        {
+            bool seen = false;
+            for (const vector& n : through)
+            {
+                seen = seen || (n & normals[i]) > 1 - 1e-9;
+            }
+            if (!seen)
+            {
+                through.append(normals[i]);
+            }
+        }
+    }
+    // The interior dihedral angle between two planes of outward normals
+    // a and b is pi less the angle between the normals
+    auto dihedral = [](const vector& a, const vector& b)
+    {
+        return constant::mathematical::pi
+          - Foam::acos(min(max(a & b, scalar(-1)), scalar(1)));
+    };
+    switch (through.size())
+    {
+        case 0: return 1;
+        case 1: return 0.5;
+        case 2:
+            return dihedral(through[0], through[1])
+               /constant::mathematical::twoPi;
+        case 3:
+            // A corner's solid angle is its dihedral angles' sum less pi
+            return
+            (
+                dihedral(through[0], through[1])
+              + dihedral(through[0], through[2])
+              + dihedral(through[1], through[2])
+              - constant::mathematical::pi
+            )/(2*constant::mathematical::twoPi);
+    }
+    FatalErrorInFunction
+        << "a sphere's centre " << x_ << " lies on " << through.size()
+        << " planes of one cell; a hexahedral cell's corner has three"
+        << exit(FatalError);
+    return 0;
+}
+
+
+Foam::scalar Foam::bodyCut::sphereVolume
+(
+    const polyMesh& mesh,
+    const label celli
+) const
+{
+    const cell& c = mesh.cells()[celli];
+    List<vector> outward(c.size());
+    List<scalar> heights(c.size());
+    const scalar R3 = pow3(radius_);
+    scalar sum = 0;
+    forAll(c, i)
+    {
+        const label facei = c[i];
+        const scalar sgn = (mesh.faceOwner()[facei] == celli ? 1 : -1);
+        const List<point> poly = facePolygon(mesh, facei);
+        vector S;
+        point cf;
+        cutPolygon::areaAndCentroid(poly, S, cf);
+        const vector n = S/mag(S);
+        scalar h = ((cf - x_) & n);
+        outward[i] = sgn*n;
+        heights[i] = sgn*h;
+        if (mag(h) <= tol_)
+        {
+            // The plane passes through the centre: no solid angle from
+            // there, and h A = 0; centreShare carries the share
+            continue;
+        }
+        if (mag(h) >= radius_)
+        {
+            continue;
+        }
+        point lo = poly[0], hi = poly[0];
+        extend(poly, lo, hi);
+        if (!mayMeet(lo, hi))
+        {
+            continue;
+        }
+        const point foot = x_ + h*n;
+        const vector e1 = normalTo(n);
+        const vector e2 = n ^ e1;
+        List<vector2D> flat(poly.size());
+        forAll(poly, j)
+        {
+            const vector d = poly[j] - foot;
+            flat[j] = vector2D(d & e1, d & e2);
+        }
+        const cutPolygon::diskSection s = cutPolygon::cutByDisk
+        (
+            flat, Foam::sqrt(sqr(radius_) - sqr(h)), h
+        );
+        sum += sgn*(h*s.area - R3*s.solidAngle)/3;
+    }
+    return sum
+      + (2*constant::mathematical::twoPi/3)*R3*centreShare(outward, heights, tol_);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::bodyCut::contains(const point& p) const
+{
+    vector d = p - x_;
+    if (planar_)
+    {
+        d.z() = 0;
+    }
+    if (radius_ >= 0)
+    {
+        return magSqr(d) < sqr(radius_);
+    }
+    forAll(normals_, k)
+    {
+        if ((normals_[k] & p) >= offsets_[k])
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
+
+Foam::bodyCut::facePart Foam::bodyCut::solidPart
+(
+    const UList<point>& poly
+) const
+{
+    vector S;
+    point centroid;
+    cutPolygon::areaAndCentroid(poly, S, centroid);
+    const scalar A = mag(S);
+    if (A <= 0)
+    {
+        return {0, centroid};
+    }
+    point lo = poly[0], hi = poly[0];
+    extend(poly, lo, hi);
+    if (!mayMeet(lo, hi))
+    {
+        return {0, centroid};
+    }
+    if (radius_ < 0)
+    {
+        return polyhedronPart(poly);
+    }
+    bool inside = true;
+    for (const point& p : poly)
+    {
+        inside = inside && contains(p);
+    }
+    if (inside)
+    {
+        return {A, centroid};
+    }
+    return planar_ ? circlePart(poly, S, centroid) : spherePart(poly, S, centroid);
+}
+
+
+Foam::bodyCut::facePart Foam::bodyCut::solidPartOfFace
+(
+    const polyMesh& mesh,
+    const label facei
+) const
+{
+    return solidPart(facePolygon(mesh, facei));
+}
+
+
+Foam::scalar Foam::bodyCut::solidVolumeOfCell
+(
+    const polyMesh& mesh,
+    const label celli
+) const
+{
+    const cell& c = mesh.cells()[celli];
+    point lo(point::max), hi(point::min);
+    bool inside = true;
+    for (const label facei : c)
+    {
+        for (const label pointi : mesh.faces()[facei])
+        {
+            const point& p = mesh.points()[pointi];
+            lo = min(lo, p);
+            hi = max(hi, p);
+            inside = inside && contains(p);
+        }
+    }
+    if (!mayMeet(lo, hi))
+    {
+        return 0;
+    }
+    if (inside)
+    {
+        return mesh.cellVolumes()[celli];
+    }
+    if (planar_)
+    {
+        // A prism along z one cell deep: the solid fraction of its face
+        // normal to z
+        for (const label facei : c)
+        {
+            const vector& S = mesh.faceAreas()[facei];
+            if (mag(S.z()) > 0.5*mag(S))
+            {
+                return mesh.cellVolumes()[celli]
+                   *solidPartOfFace(mesh, facei).area/mag(S);
+            }
+        }
+        FatalErrorInFunction
+            << "cell " << celli << " has no face normal to z; a planar"
+            << " shape's (2D) mesh is one cell deep along z"
+            << exit(FatalError);
+    }
+    return radius_ < 0
+        ? polyhedronVolume(mesh, celli)
+        : sphereVolume(mesh, celli);
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,301 @@
+/*---------------------------------------------------------------------------*\
+  dlmfdFoam: DLM/FD particle-resolved simulation of particulate flows
+-------------------------------------------------------------------------------
+License
+    This file is part of dlmfdFoam, an extension of OpenFOAM.
+
+    dlmfdFoam is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by the
+    Free Software Foundation, either version 3 of the License, or (at your
+    option) any later version. See <http://www.gnu.org/licenses/>.
+
+Description
+    The cut-cell geometry (Foam::cutPolygon, Foam::bodyCut) against closed
+    forms: a disk section's area, moment and solid angle; the solid volumes
+    of a box mesh's cells adding up to the body's volume (a sphere centred
+    anywhere, on a mesh vertex, edge or face; a turned cube; a cube whose
+    faces lie on mesh faces; a tetrahedron; a circle in 2D) to round-off;
+    each cell's solid volume against an independent count of sample points;
+    the solid parts of the faces in one mesh plane adding up to the body's
+    section there.
+
+\*---------------------------------------------------------------------------*/
+
+#include "bodyCut.H"
+#include "cutPolygon.H"
+#include "foamTestCase.H"
+#include "platonicSolid.H"
+#include "sphere.H"
+#include "circle.H"
+#include "quaternion.H"
+#include "mathematicalConstants.H"
+
+#include <gtest/gtest.h>
+
+using namespace Foam;
+using constant::mathematical::pi;
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- The solid volumes of all cells, added
+scalar totalSolidVolume(const fvMesh& mesh, const bodyCut& body)
+{
+    scalar sum = 0;
+    forAll(mesh.cells(), celli)
+    {
+        const scalar v = body.solidVolumeOfCell(mesh, celli);
+        EXPECT_GE(v, -1e-14*mesh.cellVolumes()[celli]) << "cell " << celli;
+        EXPECT_LE(v, (1 + 1e-12)*mesh.cellVolumes()[celli])
+            << "cell " << celli;
+        sum += v;
+    }
+    return sum;
+}
+
+//- The solid fraction of a cell, counted at n^3 sample points
+scalar sampledFraction
+(
+    const fvMesh& mesh,
+    const label celli,
+    const bodyCut& body,
+    const label n
+)
+{
+    // The box mesh's cells are boxes: their bounds from the points
+    point lo(point::max), hi(point::min);
+    for (const label pointi : mesh.cellPoints()[celli])
+    {
+        lo = min(lo, mesh.points()[pointi]);
+        hi = max(hi, mesh.points()[pointi]);
+    }
+    label in = 0;
+    for (label i = 0; i < n; ++i)
+    for (label j = 0; j < n; ++j)
+    for (label k = 0; k < n; ++k)
+    {
+        const vector f((i + 0.5)/n, (j + 0.5)/n, (k + 0.5)/n);
+        in += body.contains(lo + cmptMultiply(f, hi - lo));
+    }
+    return scalar(in)/pow3(scalar(n));
+}
+
+//- The solid area of the mesh faces lying in the plane z = z0
+scalar solidAreaInPlane(const fvMesh& mesh, const bodyCut& body, scalar z0)
+{
+    scalar sum = 0;
+    for (label facei = 0; facei < mesh.nInternalFaces(); ++facei)
+    {
+        const vector& S = mesh.faceAreas()[facei];
+        if
+        (
+            mag(S.z()) > 0.99*mag(S)
+         && mag(mesh.faceCentres()[facei].z() - z0) < 1e-12
+        )
+        {
+            sum += body.solidPartOfFace(mesh, facei).area;
+        }
+    }
+    return sum;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * * Tests * * * * * * * * * * * * * * * * //
+
+TEST(cutPolygon, diskInsideASquareIsTheWholeDiskWithItsCapSolidAngle)
+{
+    // A square of side 4 about a disk of radius 1: the section is the disk,
+    // centred, and from height h it subtends 2 pi (1 - h/sqrt(h^2 + 1))
+    const List<vector2D> square
+    ({
+        vector2D(-2, -2), vector2D(2, -2), vector2D(2, 2), vector2D(-2, 2)
+    });
+    for (const scalar h : {0.0, 0.3, -0.7})
+    {
+        const cutPolygon::diskSection s = cutPolygon::cutByDisk(square, 1, h);
+        EXPECT_NEAR(s.area, pi, 1e-14);
+        EXPECT_NEAR(mag(s.moment), 0, 1e-14);
+        EXPECT_NEAR
+        (
+            s.solidAngle,
+            2*pi*sign(h)*(h == 0 ? 0 : 1 - mag(h)/Foam::sqrt(sqr(h) + 1)),
+            1e-14
+        );
+    }
+}
+
+
+TEST(cutPolygon, squareInsideADiskIsTheSquareWithItsSolidAngle)
+{
+    // The unit square [0,1]^2 inside a disk of radius 2: area 1, centroid
+    // (1/2, 1/2), and from height 1 above the origin the solid angle of
+    // the rectangle with a corner on the axis, atan(ab/(h sqrt(h^2+a^2+b^2)))
+    const List<vector2D> sq
+    ({
+        vector2D(0, 0), vector2D(1, 0), vector2D(1, 1), vector2D(0, 1)
+    });
+    const cutPolygon::diskSection s = cutPolygon::cutByDisk(sq, 2, 1);
+    EXPECT_NEAR(s.area, 1, 1e-15);
+    EXPECT_NEAR(s.moment.x(), 0.5, 1e-15);
+    EXPECT_NEAR(s.moment.y(), 0.5, 1e-15);
+    EXPECT_NEAR(s.solidAngle, Foam::atan(1/Foam::sqrt(3.0)), 1e-14);
+}
+
+
+TEST(cutPolygon, halfPlaneClipsASquareAndKeepsAPolygonInThePlane)
+{
+    const List<point> sq
+    ({
+        point(0, 0, 0), point(1, 0, 0), point(1, 1, 0), point(0, 1, 0)
+    });
+    DynamicList<point> kept;
+    cutPolygon::clip(sq, vector(1, 1, 0)/Foam::sqrt(2.0), 0.5, 1e-14, kept);
+    vector S;
+    point c;
+    cutPolygon::areaAndCentroid(kept, S, c);
+    // n.x <= 0.5 is x + y <= sqrt(2)/2: the corner triangle of legs
+    // sqrt(2)/2, centroid at a third of a leg
+    const scalar leg = 0.5*Foam::sqrt(2.0);
+    EXPECT_NEAR(S.z(), 0.5*sqr(leg), 1e-15);
+    EXPECT_NEAR(c.x(), leg/3, 1e-15);
+    // A polygon lying in the clipping plane is kept whole
+    cutPolygon::clip(sq, vector(0, 0, 1), 0, 1e-14, kept);
+    EXPECT_EQ(kept.size(), 4);
+}
+
+
+TEST(bodyCut, sphereCellVolumesAddUpToTheSphereWhereverItsCentreLies)
+{
+    test::foamTestCase tc;
+    const fvMesh& mesh = tc.makeBoxMesh(8, 8, 8, vector(1, 1, 1));
+    const particleShapes::sphere ball("ball", 0.45);
+    const scalar V = pi/6*pow3(0.45);
+    // Anywhere; on a mesh vertex (8 cells share the centre); on an edge;
+    // on a face
+    for
+    (
+        const point& x :
+        {
+            point(0.4871, 0.5213, 0.4432), point(0.5, 0.5, 0.5),
+            point(0.5, 0.375, 0.4432), point(0.5, 0.4871, 0.4432)
+        }
+    )
+    {
+        const bodyCut body(ball, x, tensor::I);
+        EXPECT_NEAR(totalSolidVolume(mesh, body)/V, 1, 1e-12)
+            << x.x() << ' ' << x.y() << ' ' << x.z();
+    }
+}
+
+
+TEST(bodyCut, sphereCellVolumesMatchSampledFractions)
+{
+    test::foamTestCase tc;
+    const fvMesh& mesh = tc.makeBoxMesh(6, 6, 6, vector(1, 1, 1));
+    const bodyCut body
+    (
+        particleShapes::sphere("ball", 0.5), point(0.51, 0.47, 0.5), tensor::I
+    );
+    label cut = 0;
+    forAll(mesh.cells(), celli)
+    {
+        const scalar f =
+            body.solidVolumeOfCell(mesh, celli)/mesh.cellVolumes()[celli];
+        if (f > 0 && f < 1)
+        {
+            ++cut;
+            // 40^3 samples: a surface crossing the cell misses about one
+            // sample layer's share, well under 0.02
+            EXPECT_NEAR(f, sampledFraction(mesh, celli, body, 40), 0.02)
+                << "cell " << celli;
+        }
+    }
+    EXPECT_GT(cut, 40);
+}
+
+
+TEST(bodyCut, turnedCubeAndTetrahedronCellVolumesAddUpToTheirVolumes)
+{
+    test::foamTestCase tc;
+    const fvMesh& mesh = tc.makeBoxMesh(7, 7, 7, vector(1, 1, 1));
+    const tensor R = quaternion(normalised(vector(1, 2, 3)), 0.7).R();
+    {
+        const particleShapes::platonicSolid cube("cube", "cube", 0.4);
+        const bodyCut body(cube, point(0.52, 0.48, 0.51), R);
+        EXPECT_NEAR(totalSolidVolume(mesh, body)/pow3(0.4), 1, 1e-12);
+    }
+    {
+        const particleShapes::platonicSolid tet("tet", "tetrahedron", 0.5);
+        const bodyCut body(tet, point(0.45, 0.5, 0.55), R);
+        EXPECT_NEAR
+        (
+            totalSolidVolume(mesh, body)/tet.volume(), 1, 1e-12
+        );
+    }
+}
+
+
+TEST(bodyCut, cubeOnMeshFacesFillsItsCellsExactly)
+{
+    // A cube of edge 0.5 with its faces on mesh planes (h = 0.125): every
+    // cell is full or empty, and the faces inside or on it are solid
+    test::foamTestCase tc;
+    const fvMesh& mesh = tc.makeBoxMesh(8, 8, 8, vector(1, 1, 1));
+    const particleShapes::platonicSolid cube("cube", "cube", 0.5);
+    const bodyCut body(cube, point(0.5, 0.5, 0.5), tensor::I);
+    label full = 0;
+    forAll(mesh.cells(), celli)
+    {
+        const scalar f =
+            body.solidVolumeOfCell(mesh, celli)/mesh.cellVolumes()[celli];
+        EXPECT_TRUE(mag(f) < 1e-12 || mag(f - 1) < 1e-12)
+            << "cell " << celli << " fraction " << f;
+        full += (f > 0.5);
+    }
+    EXPECT_EQ(full, 64);
+    EXPECT_NEAR(solidAreaInPlane(mesh, body, 0.25), 0.25, 1e-14);
+    EXPECT_NEAR(solidAreaInPlane(mesh, body, 0.5), 0.25, 1e-14);
+}
+
+
+TEST(bodyCut, sphereFaceSectionsAddUpToTheDiskInTheirPlane)
+{
+    test::foamTestCase tc;
+    const fvMesh& mesh = tc.makeBoxMesh(9, 9, 9, vector(1, 1, 1));
+    const scalar r = 0.3;
+    const point x(0.51, 0.47, 0.53);
+    const bodyCut body(particleShapes::sphere("ball", 2*r), x, tensor::I);
+    for (const label k : {3, 4, 5, 6})
+    {
+        const scalar z0 = k/9.0;
+        EXPECT_NEAR
+        (
+            solidAreaInPlane(mesh, body, z0),
+            pi*(sqr(r) - sqr(z0 - x.z())),
+            1e-13
+        ) << "plane z = " << z0;
+    }
+}
+
+
+TEST(bodyCut, circleCellAreasAddUpToTheDiskIn2D)
+{
+    test::foamTestCase tc;
+    const fvMesh& mesh = tc.makeBoxMesh(10, 10, 1, vector(1, 1, 0.1));
+    const particleShapes::circle disk("disk", 0.43, 0.1);
+    for (const point& x : {point(0.5, 0.5, 0.05), point(0.537, 0.471, 0.05)})
+    {
+        const bodyCut body(disk, x, tensor::I);
+        EXPECT_NEAR
+        (
+            totalSolidVolume(mesh, body)/(pi*sqr(0.215)*0.1), 1, 1e-12
+        ) << x.x() << ' ' << x.y();
+    }
+}
+
+
+// ************************************************************************* //
