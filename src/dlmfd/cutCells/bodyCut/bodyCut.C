@@ -46,6 +46,36 @@ namespace
         return poly;
     }
 
+    //- The part of a planar polygon (normal n) inside the disk of radius r
+    //  about foot in its plane, seen from height h on the axis; its
+    //  centroid, when it has area, in centroid
+    cutPolygon::diskSection cutByDiskAt
+    (
+        const UList<point>& poly,
+        const point& foot,
+        const vector& n,
+        const vector& e1,
+        const scalar r,
+        const scalar h,
+        point& centroid
+    )
+    {
+        const vector e2 = n ^ e1;
+        List<vector2D> flat(poly.size());
+        forAll(poly, i)
+        {
+            const vector d = poly[i] - foot;
+            flat[i] = vector2D(d & e1, d & e2);
+        }
+        const cutPolygon::diskSection s = cutPolygon::cutByDisk(flat, r, h);
+        if (s.area > 0)
+        {
+            const vector2D m = s.moment/s.area;
+            centroid = foot + m.x()*e1 + m.y()*e2;
+        }
+        return s;
+    }
+
     void extend(const UList<point>& ps, point& lo, point& hi)
     {
         for (const point& p : ps)
@@ -175,23 +205,13 @@ Foam::bodyCut::facePart Foam::bodyCut::spherePart
     {
         return {0, centroid};
     }
-    const point foot = x_ + h*n;
-    const vector e1 = normalTo(n);
-    const vector e2 = n ^ e1;
-    List<vector2D> flat(poly.size());
-    forAll(poly, i)
-    {
-        const vector d = poly[i] - foot;
-        flat[i] = vector2D(d & e1, d & e2);
-    }
-    const cutPolygon::diskSection s =
-        cutPolygon::cutByDisk(flat, Foam::sqrt(sqr(radius_) - sqr(h)), 0);
-    if (s.area <= 0)
-    {
-        return {0, centroid};
-    }
-    const vector2D m = s.moment/s.area;
-    return {s.area, foot + m.x()*e1 + m.y()*e2};
+    point c = centroid;
+    const scalar area = cutByDiskAt
+    (
+        poly, x_ + h*n, n, normalTo(n), Foam::sqrt(sqr(radius_) - sqr(h)),
+        0, c
+    ).area;
+    return {max(area, scalar(0)), c};
 }
 
 
@@ -206,23 +226,13 @@ Foam::bodyCut::facePart Foam::bodyCut::circlePart
     if (mag(n.z()) > 1 - 1e-9)
     {
         // A face normal to z: the disk about the centre's foot
-        const point foot(x_.x(), x_.y(), centroid.z());
-        const vector e1(1, 0, 0);
-        const vector e2 = n ^ e1;
-        List<vector2D> flat(poly.size());
-        forAll(poly, i)
-        {
-            const vector d = poly[i] - foot;
-            flat[i] = vector2D(d & e1, d & e2);
-        }
-        const cutPolygon::diskSection s =
-            cutPolygon::cutByDisk(flat, radius_, 0);
-        if (s.area <= 0)
-        {
-            return {0, centroid};
-        }
-        const vector2D m = s.moment/s.area;
-        return {s.area, foot + m.x()*e1 + m.y()*e2};
+        point c = centroid;
+        const scalar area = cutByDiskAt
+        (
+            poly, point(x_.x(), x_.y(), centroid.z()), n, vector(1, 0, 0),
+            radius_, 0, c
+        ).area;
+        return {max(area, scalar(0)), c};
     }
     if (mag(n.z()) < 1e-9)
     {
@@ -428,18 +438,11 @@ Foam::scalar Foam::bodyCut::sphereVolume
         {
             continue;
         }
-        const point foot = x_ + h*n;
-        const vector e1 = normalTo(n);
-        const vector e2 = n ^ e1;
-        List<vector2D> flat(poly.size());
-        forAll(poly, j)
-        {
-            const vector d = poly[j] - foot;
-            flat[j] = vector2D(d & e1, d & e2);
-        }
-        const cutPolygon::diskSection s = cutPolygon::cutByDisk
+        point unused;
+        const cutPolygon::diskSection s = cutByDiskAt
         (
-            flat, Foam::sqrt(sqr(radius_) - sqr(h)), h
+            poly, x_ + h*n, n, normalTo(n),
+            Foam::sqrt(sqr(radius_) - sqr(h)), h, unused
         );
         sum += sgn*(h*s.area - R3*s.solidAngle)/3;
     }
