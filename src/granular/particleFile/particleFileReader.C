@@ -16,6 +16,8 @@ License
 #include "primitiveEntry.H"
 #include "HashTable.H"
 #include "error.H"
+#include "Time.H"
+#include "OSspecific.H"
 
 #include <cctype>
 #include <cstring>
@@ -438,6 +440,25 @@ Foam::dictionary Foam::particleFileReader::parse
 )
 {
     return particleFileReader(text, name).entries();
+}
+
+
+Foam::fileName Foam::particleFileReader::startFile(const Time& runTime)
+{
+    const fileName written(runTime.timePath()/"uniform"/"particles");
+    const fileName given
+    (
+        runTime.globalPath()/runTime.timeName()/"particles"
+    );
+    const fileName file(isFile(written) ? written : given);
+    if (!isFile(file))
+    {
+        FatalErrorInFunction
+            << "no particle file " << written << " nor " << given << nl
+            << "    Place particles with placeParticles, or copy them"
+            << " from 0.orig" << exit(FatalError);
+    }
+    return file;
 }
 
 

@@ -18,6 +18,8 @@ License
 #include "convexPolyhedron.H"
 #include "mathematicalConstants.H"
 
+#include <algorithm>
+
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
 namespace
@@ -34,16 +36,12 @@ namespace
         return normalised(n ^ axis);
     }
 
-    //- The face's points, in its own order
-    List<point> facePolygon(const polyMesh& mesh, const label facei)
+    //- a before b in the order of their coordinates, x first
+    bool before(const point& a, const point& b)
     {
-        const face& f = mesh.faces()[facei];
-        List<point> poly(f.size());
-        forAll(f, i)
-        {
-            poly[i] = mesh.points()[f[i]];
-        }
-        return poly;
+        return a.x() < b.x()
+            || (a.x() == b.x() && (a.y() < b.y()
+            || (a.y() == b.y() && a.z() < b.z())));
     }
 
     //- The part of a planar polygon (normal n) inside the disk of radius r
@@ -84,6 +82,118 @@ namespace
             hi = max(hi, p);
         }
     }
+}
+
+
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
+
+Foam::List<Foam::point> Foam::bodyCut::facePolygon
+(
+    const polyMesh& mesh,
+    const label facei
+)
+{
+    const face& f = mesh.faces()[facei];
+    const pointField& pts = mesh.points();
+    const label n = f.size();
+    label first = 0;
+    for (label i = 1; i < n; ++i)
+    {
+        if (before(pts[f[i]], pts[f[first]]))
+        {
+            first = i;
+        }
+    }
+    const label step =
+        before(pts[f[(first + 1) % n]], pts[f[(first + n - 1) % n]])
+      ? 1 : n - 1;
+    List<point> poly(n);
+    forAll(poly, i)
+    {
+        poly[i] = pts[f[(first + i*step) % n]];
+    }
+    return poly;
+}
+
+
+Foam::labelList Foam::bodyCut::cellFacesInOrder
+(
+    const polyMesh& mesh,
+    const label celli
+)
+{
+    const cell& c = mesh.cells()[celli];
+    List<List<point>> polys(c.size());
+    forAll(c, i)
+    {
+        polys[i] = facePolygon(mesh, c[i]);
+    }
+    labelList order(identity(c.size()));
+    std::sort
+    (
+        order.begin(),
+        order.end(),
+        [&polys](const label a, const label b)
+        {
+            const List<point>& pa = polys[a];
+            const List<point>& pb = polys[b];
+            for (label k = 0; k < min(pa.size(), pb.size()); ++k)
+            {
+                if (before(pa[k], pb[k]))
+                {
+                    return true;
+                }
+                if (before(pb[k], pa[k]))
+                {
+                    return false;
+                }
+            }
+            return pa.size() < pb.size();
+        }
+    );
+    labelList faces(c.size());
+    forAll(order, i)
+    {
+        faces[i] = c[order[i]];
+    }
+    return faces;
+}
+
+
+Foam::point Foam::bodyCut::lowerCorner
+(
+    const polyMesh& mesh,
+    const label celli
+)
+{
+    point lo(point::max);
+    for (const label facei : mesh.cells()[celli])
+    {
+        for (const label pointi : mesh.faces()[facei])
+        {
+            lo = min(lo, mesh.points()[pointi]);
+        }
+    }
+    return lo;
+}
+
+
+Foam::scalar Foam::bodyCut::cellVolume(const polyMesh& mesh, const label celli)
+{
+    const point x0 = lowerCorner(mesh, celli);
+    scalar sum = 0;
+    for (const label facei : cellFacesInOrder(mesh, celli))
+    {
+        vector S;
+        point cf;
+        cutPolygon::areaAndCentroid(facePolygon(mesh, facei), S, cf);
+        const scalar sgn =
+            ((S & mesh.faceAreas()[facei]) > 0)
+         == (mesh.faceOwner()[facei] == celli)
+          ? 1 : -1;
+        sum += sgn*((cf - x0) & S);
+    }
+    return sum/3;
 }
 
 
@@ -265,19 +375,24 @@ Foam::scalar Foam::bodyCut::polyhedronVolume
     const label celli
 ) const
 {
-    const point& x0 = mesh.cellCentres()[celli];
-    const cell& c = mesh.cells()[celli];
+    const point x0 = lowerCorner(mesh, celli);
+    const labelList c = cellFacesInOrder(mesh, celli);
     List<vector> planeNormals(c.size());
     List<scalar> planeOffsets(c.size());
     scalar sum = 0;
     forAll(c, i)
     {
         const label facei = c[i];
-        const scalar sgn = (mesh.faceOwner()[facei] == celli ? 1 : -1);
         const List<point> poly = facePolygon(mesh, facei);
         vector S;
         point cf;
         cutPolygon::areaAndCentroid(poly, S, cf);
+        // Out of the cell: the polygon's own normal, turned where it points
+        // in (the face's neighbour, or the polygon's order reversed)
+        const scalar sgn =
+            ((S & mesh.faceAreas()[facei]) > 0)
+         == (mesh.faceOwner()[facei] == celli)
+          ? 1 : -1;
         planeNormals[i] = sgn*S/mag(S);
         planeOffsets[i] = (planeNormals[i] & cf);
 
@@ -405,7 +520,7 @@ Foam::scalar Foam::bodyCut::sphereVolume
     const label celli
 ) const
 {
-    const cell& c = mesh.cells()[celli];
+    const labelList c = cellFacesInOrder(mesh, celli);
     List<vector> outward(c.size());
     List<scalar> heights(c.size());
     const scalar R3 = pow3(radius_);
@@ -413,11 +528,16 @@ Foam::scalar Foam::bodyCut::sphereVolume
     forAll(c, i)
     {
         const label facei = c[i];
-        const scalar sgn = (mesh.faceOwner()[facei] == celli ? 1 : -1);
         const List<point> poly = facePolygon(mesh, facei);
         vector S;
         point cf;
         cutPolygon::areaAndCentroid(poly, S, cf);
+        // Out of the cell: the polygon's own normal, turned where it points
+        // in (the face's neighbour, or the polygon's order reversed)
+        const scalar sgn =
+            ((S & mesh.faceAreas()[facei]) > 0)
+         == (mesh.faceOwner()[facei] == celli)
+          ? 1 : -1;
         const vector n = S/mag(S);
         scalar h = ((cf - x_) & n);
         outward[i] = sgn*n;
@@ -546,7 +666,7 @@ Foam::scalar Foam::bodyCut::solidVolumeOfCell
     }
     if (inside)
     {
-        return mesh.cellVolumes()[celli];
+        return cellVolume(mesh, celli);
     }
     if (planar_)
     {
@@ -557,8 +677,11 @@ Foam::scalar Foam::bodyCut::solidVolumeOfCell
             const vector& S = mesh.faceAreas()[facei];
             if (mag(S.z()) > 0.5*mag(S))
             {
-                return mesh.cellVolumes()[celli]
-                   *solidPartOfFace(mesh, facei).area/mag(S);
+                vector Sc;
+                point cf;
+                cutPolygon::areaAndCentroid(facePolygon(mesh, facei), Sc, cf);
+                return cellVolume(mesh, celli)
+                   *solidPartOfFace(mesh, facei).area/mag(Sc);
             }
         }
         FatalErrorInFunction

@@ -51,26 +51,11 @@ Foam::fileName Foam::particleDistribution::readParticles
     const bool masterOnly
 ) const
 {
-    // Written by the solver (processor0's in parallel), else the case's
-    // own, by hand or by placeParticles
-    const Time& runTime = mesh_.time();
-    const fileName written(runTime.timePath()/"uniform"/"particles");
-    const fileName given
-    (
-        runTime.globalPath()/runTime.timeName()/"particles"
-    );
     fileName file;
     dictionary dict;
     if (Pstream::master())
     {
-        file = isFile(written) ? written : given;
-        if (!isFile(file))
-        {
-            FatalErrorInFunction
-                << "no particle file " << written << " nor " << given << nl
-                << "    Place particles with placeParticles, or copy them"
-                << " from 0.orig" << exit(FatalError);
-        }
+        file = particleFileReader::startFile(mesh_.time());
         if (masterOnly)
         {
             into.readParticles(file);

@@ -1,0 +1,210 @@
+/*---------------------------------------------------------------------------*\
+  dlmfdFoam: DLM/FD particle-resolved simulation of particulate flows
+-------------------------------------------------------------------------------
+License
+    This file is part of dlmfdFoam, an extension of OpenFOAM.
+
+    dlmfdFoam is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by the
+    Free Software Foundation, either version 3 of the License, or (at your
+    option) any later version. See <http://www.gnu.org/licenses/>.
+
+\*---------------------------------------------------------------------------*/
+
+#include "cutFractions.H"
+#include "cutPolygon.H"
+#include "periodicImages.H"
+#include "syncTools.H"
+#include "zeroGradientFvPatchFields.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+    using namespace Foam;
+
+    scalar largestCellReach(const polyMesh& mesh)
+    {
+        scalar reach = 0;
+        forAll(mesh.cells(), celli)
+        {
+            const point& C = mesh.cellCentres()[celli];
+            for (const label facei : mesh.cells()[celli])
+            {
+                for (const label pointi : mesh.faces()[facei])
+                {
+                    reach = max(reach, mag(mesh.points()[pointi] - C));
+                }
+            }
+        }
+        return returnReduce(reach, maxOp<scalar>());
+    }
+
+    //- A face's area, from its points as bodyCut measures its parts
+    scalar faceArea(const polyMesh& mesh, const label facei)
+    {
+        const List<point> poly = bodyCut::facePolygon(mesh, facei);
+        vector S;
+        point c;
+        cutPolygon::areaAndCentroid(poly, S, c);
+        return mag(S);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::cutFractions::cutFractions(const fvMesh& mesh)
+:
+    mesh_(mesh),
+    search_(mesh),
+    cellReach_(largestCellReach(mesh)),
+    solidVolume_(mesh.nCells(), 0),
+    solidFaceFraction_(mesh.nFaces(), 0),
+    faceVisit_(mesh.nFaces(), -1),
+    nCut_(0),
+    couplingMismatch_(0),
+    largestOverlap_(0),
+    fluidFraction_
+    (
+        IOobject
+        (
+            "fluidFraction",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE
+        ),
+        mesh,
+        dimensionedScalar("one", dimless, 1.0),
+        zeroGradientFvPatchScalarField::typeName
+    ),
+    faceAperture_
+    (
+        IOobject
+        (
+            "faceAperture",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE
+        ),
+        mesh,
+        dimensionedScalar("one", dimless, 1.0)
+    )
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::cutFractions::clear()
+{
+    solidVolume_ = 0;
+    solidFaceFraction_ = 0;
+    faceVisit_ = -1;
+    nCut_ = 0;
+}
+
+
+void Foam::cutFractions::cut
+(
+    const particleShape& shape,
+    const point& x,
+    const tensor& R,
+    const vector& period
+)
+{
+    const scalar reach = shape.boundingRadius() + cellReach_;
+    for
+    (
+        const vector& s
+      : periodicImages::shifts(mesh_.bounds(), period, x, reach)
+    )
+    {
+        cut(bodyCut(shape, x - s, R));
+    }
+}
+
+
+void Foam::cutFractions::cut(const bodyCut& body)
+{
+    const label visit = nCut_++;
+    cells_.clear();
+    search_.cellsInBall
+    (
+        body.centre(), body.boundingRadius() + cellReach_, cells_
+    );
+    for (const label celli : cells_)
+    {
+        solidVolume_[celli] += body.solidVolumeOfCell(mesh_, celli);
+        for (const label facei : mesh_.cells()[celli])
+        {
+            if (faceVisit_[facei] != visit)
+            {
+                faceVisit_[facei] = visit;
+                const scalar A = body.solidPartOfFace(mesh_, facei).area;
+                if (A > 0)
+                {
+                    solidFaceFraction_[facei] += A/faceArea(mesh_, facei);
+                }
+            }
+        }
+    }
+}
+
+
+void Foam::cutFractions::finish()
+{
+    // Both sides of a coupled face: how far apart, then the larger on both
+    scalarField lower(solidFaceFraction_);
+    syncTools::syncFaceList(mesh_, lower, minEqOp<scalar>());
+    syncTools::syncFaceList(mesh_, solidFaceFraction_, maxEqOp<scalar>());
+    couplingMismatch_ =
+        returnReduce(gMax(solidFaceFraction_ - lower), maxOp<scalar>());
+
+    scalar overlap = 0;
+    scalarField& alpha = fluidFraction_.primitiveFieldRef();
+    forAll(alpha, celli)
+    {
+        const scalar f =
+            solidVolume_[celli] > 0
+          ? solidVolume_[celli]/bodyCut::cellVolume(mesh_, celli)
+          : 0;
+        overlap = max(overlap, f - 1);
+        alpha[celli] = 1 - min(f, scalar(1));
+    }
+    fluidFraction_.correctBoundaryConditions();
+
+    scalarField& alphaf = faceAperture_.primitiveFieldRef();
+    forAll(alphaf, facei)
+    {
+        const scalar f = solidFaceFraction_[facei];
+        overlap = max(overlap, f - 1);
+        alphaf[facei] = 1 - min(f, scalar(1));
+    }
+    for (fvsPatchScalarField& pf : faceAperture_.boundaryFieldRef())
+    {
+        const label start = pf.patch().start();
+        forAll(pf, i)
+        {
+            const scalar f = solidFaceFraction_[start + i];
+            overlap = max(overlap, f - 1);
+            pf[i] = 1 - min(f, scalar(1));
+        }
+    }
+    // Round-off beyond the whole is no overlap
+    largestOverlap_ = returnReduce(overlap, maxOp<scalar>());
+    if (largestOverlap_ < 1e-12)
+    {
+        largestOverlap_ = 0;
+    }
+}
+
+
+Foam::scalar Foam::cutFractions::totalSolidVolume() const
+{
+    return returnReduce(sum(solidVolume_), sumOp<scalar>());
+}
+
+
+// ************************************************************************* //
