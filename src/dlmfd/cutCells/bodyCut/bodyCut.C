@@ -240,19 +240,22 @@ Foam::bodyCut::bodyCut
         }
         normals_.transfer(normals);
         offsets_.transfer(offsets);
-        if (!planar_)
+        const faceList& fs = poly->faces();
+        DynamicList<List<point>> faces(fs.size());
+        forAll(fs, f)
         {
-            const faceList& fs = poly->faces();
-            faces_.setSize(fs.size());
-            forAll(fs, f)
+            if (planar_ && mag((R & n[f]).z()) > 0.5)
             {
-                faces_[f].setSize(fs[f].size());
-                forAll(fs[f], i)
-                {
-                    faces_[f][i] = x + (R & poly->points()[fs[f][i]]);
-                }
+                continue;
             }
+            List<point> world(fs[f].size());
+            forAll(fs[f], i)
+            {
+                world[i] = x + (R & poly->points()[fs[f][i]]);
+            }
+            faces.append(world);
         }
+        faces_.transfer(faces);
     }
     else
     {
@@ -369,7 +372,7 @@ Foam::bodyCut::facePart Foam::bodyCut::circlePart
 }
 
 
-Foam::scalar Foam::bodyCut::polyhedronVolume
+Foam::bodyCut::cellPart Foam::bodyCut::polyhedronCell
 (
     const polyMesh& mesh,
     const label celli
@@ -380,6 +383,23 @@ Foam::scalar Foam::bodyCut::polyhedronVolume
     List<vector> planeNormals(c.size());
     List<scalar> planeOffsets(c.size());
     scalar sum = 0;
+    vector wallArea(Zero);
+    vector wallMoment(Zero);
+    scalar wallWeight = 0;
+    // A planar prism's side faces span the cell along z
+    scalar zLo = GREAT, zHi = -GREAT;
+    if (planar_)
+    {
+        const point lo = lowerCorner(mesh, celli);
+        zLo = lo.z();
+        for (const label facei : c)
+        {
+            for (const label pointi : mesh.faces()[facei])
+            {
+                zHi = max(zHi, mesh.points()[pointi].z());
+            }
+        }
+    }
     forAll(c, i)
     {
         const label facei = c[i];
@@ -434,6 +454,13 @@ Foam::scalar Foam::bodyCut::polyhedronVolume
             continue;
         }
         work0_ = faces_[k];
+        if (planar_)
+        {
+            for (point& p : work0_)
+            {
+                p.z() = (p.z() > x_.z() ? zHi : zLo);
+            }
+        }
         forAll(planeNormals, i)
         {
             cutPolygon::clip
@@ -450,8 +477,16 @@ Foam::scalar Foam::bodyCut::polyhedronVolume
         point ck;
         cutPolygon::areaAndCentroid(work0_, Sk, ck);
         sum += ((ck - x0) & Sk);
+        wallArea += Sk;
+        wallMoment += mag(Sk)*(ck - x0);
+        wallWeight += mag(Sk);
     }
-    return sum/3;
+    return
+    {
+        planar_ ? planarVolume(mesh, celli) : sum/3,
+        wallArea,
+        wallWeight > 0 ? x0 + wallMoment/wallWeight : x0
+    };
 }
 
 
@@ -514,17 +549,21 @@ Foam::scalar Foam::bodyCut::centreShare
 }
 
 
-Foam::scalar Foam::bodyCut::sphereVolume
+Foam::bodyCut::cellPart Foam::bodyCut::roundCell
 (
     const polyMesh& mesh,
     const label celli
 ) const
 {
     const labelList c = cellFacesInOrder(mesh, celli);
+    const point x0 = lowerCorner(mesh, celli);
     List<vector> outward(c.size());
     List<scalar> heights(c.size());
     const scalar R3 = pow3(radius_);
     scalar sum = 0;
+    // The solid parts' area vectors out of the cell, for the wall's closure
+    vector solidOut(Zero);
+    scalar zSum = 0;
     forAll(c, i)
     {
         const label facei = c[i];
@@ -532,6 +571,7 @@ Foam::scalar Foam::bodyCut::sphereVolume
         vector S;
         point cf;
         cutPolygon::areaAndCentroid(poly, S, cf);
+        zSum += cf.z();
         // Out of the cell: the polygon's own normal, turned where it points
         // in (the face's neighbour, or the polygon's order reversed)
         const scalar sgn =
@@ -539,15 +579,14 @@ Foam::scalar Foam::bodyCut::sphereVolume
          == (mesh.faceOwner()[facei] == celli)
           ? 1 : -1;
         const vector n = S/mag(S);
+        if (planar_)
+        {
+            solidOut += sgn*solidPart(poly).area*n;
+            continue;
+        }
         scalar h = ((cf - x_) & n);
         outward[i] = sgn*n;
         heights[i] = sgn*h;
-        if (mag(h) <= tol_)
-        {
-            // The plane passes through the centre: no solid angle from
-            // there, and h A = 0; centreShare carries the share
-            continue;
-        }
         if (mag(h) >= radius_)
         {
             continue;
@@ -558,16 +597,69 @@ Foam::scalar Foam::bodyCut::sphereVolume
         {
             continue;
         }
+        // The plane through the centre (within tol_): no solid angle from
+        // there, and h A = 0; centreShare carries the share
+        const bool throughCentre = mag(h) <= tol_;
         point unused;
         const cutPolygon::diskSection s = cutByDiskAt
         (
             poly, x_ + h*n, n, normalTo(n),
-            Foam::sqrt(sqr(radius_) - sqr(h)), h, unused
+            Foam::sqrt(sqr(radius_) - sqr(h)), throughCentre ? 0 : h, unused
         );
-        sum += sgn*(h*s.area - R3*s.solidAngle)/3;
+        solidOut += sgn*s.area*n;
+        if (!throughCentre)
+        {
+            sum += sgn*(h*s.area - R3*s.solidAngle)/3;
+        }
     }
-    return sum
-      + (2*constant::mathematical::twoPi/3)*R3*centreShare(outward, heights, tol_);
+    // The wall's centroid: the surface point along its mean normal (on a
+    // sphere the pressure's moment about the centre is then zero, as it is
+    // on the sphere itself)
+    const vector wallArea = -solidOut;
+    point wallCentroid = x0;
+    if (magSqr(wallArea) > 0)
+    {
+        wallCentroid = x_ + radius_*wallArea/mag(wallArea);
+        if (planar_)
+        {
+            wallCentroid.z() = zSum/c.size();
+        }
+    }
+    const scalar volume =
+        planar_
+      ? planarVolume(mesh, celli)
+      : sum
+      + (2*constant::mathematical::twoPi/3)*R3
+       *centreShare(outward, heights, tol_);
+    return {volume, wallArea, wallCentroid};
+}
+
+
+Foam::scalar Foam::bodyCut::planarVolume
+(
+    const polyMesh& mesh,
+    const label celli
+) const
+{
+    // A prism along z one cell deep: the solid fraction of its face normal
+    // to z
+    for (const label facei : mesh.cells()[celli])
+    {
+        const vector& S = mesh.faceAreas()[facei];
+        if (mag(S.z()) > 0.5*mag(S))
+        {
+            const List<point> poly = facePolygon(mesh, facei);
+            vector Sc;
+            point cf;
+            cutPolygon::areaAndCentroid(poly, Sc, cf);
+            return cellVolume(mesh, celli)*solidPart(poly).area/mag(Sc);
+        }
+    }
+    FatalErrorInFunction
+        << "cell " << celli << " has no face normal to z; a planar"
+        << " shape's (2D) mesh is one cell deep along z"
+        << exit(FatalError);
+    return 0;
 }
 
 
@@ -641,7 +733,7 @@ Foam::bodyCut::facePart Foam::bodyCut::solidPartOfFace
 }
 
 
-Foam::scalar Foam::bodyCut::solidVolumeOfCell
+Foam::bodyCut::cellPart Foam::bodyCut::solidPartOfCell
 (
     const polyMesh& mesh,
     const label celli
@@ -662,36 +754,13 @@ Foam::scalar Foam::bodyCut::solidVolumeOfCell
     }
     if (!mayMeet(lo, hi))
     {
-        return 0;
+        return {0, Zero, lo};
     }
     if (inside)
     {
-        return cellVolume(mesh, celli);
+        return {cellVolume(mesh, celli), Zero, lo};
     }
-    if (planar_)
-    {
-        // A prism along z one cell deep: the solid fraction of its face
-        // normal to z
-        for (const label facei : c)
-        {
-            const vector& S = mesh.faceAreas()[facei];
-            if (mag(S.z()) > 0.5*mag(S))
-            {
-                vector Sc;
-                point cf;
-                cutPolygon::areaAndCentroid(facePolygon(mesh, facei), Sc, cf);
-                return cellVolume(mesh, celli)
-                   *solidPartOfFace(mesh, facei).area/mag(Sc);
-            }
-        }
-        FatalErrorInFunction
-            << "cell " << celli << " has no face normal to z; a planar"
-            << " shape's (2D) mesh is one cell deep along z"
-            << exit(FatalError);
-    }
-    return radius_ < 0
-        ? polyhedronVolume(mesh, celli)
-        : sphereVolume(mesh, celli);
+    return radius_ < 0 ? polyhedronCell(mesh, celli) : roundCell(mesh, celli);
 }
 
 
