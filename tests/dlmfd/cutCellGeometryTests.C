@@ -22,6 +22,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "bodyCut.H"
+#include "cutFractions.H"
 #include "cutPolygon.H"
 #include "foamTestCase.H"
 #include "platonicSolid.H"
@@ -407,6 +408,93 @@ TEST(bodyCut, polygonPrismIn2DAddsUpAndClosesItsCells)
     const bodyCut body(plate, point(0.47, 0.52, 0.05), R);
     EXPECT_NEAR(totalSolidVolume(mesh, body)/plate.volume(), 1, 1e-12);
     EXPECT_LT(largestClosureError(mesh, body), 1e-13);
+}
+
+
+//- The largest, over the cells, of the residual of the geometric law over
+//  one step dt, over h^3: the change of the solid volume against the flux
+//  of the body's velocity out of the cell's faces at mid-step
+scalar geometricLawResidual
+(
+    const fvMesh& mesh,
+    const particleShape& shape,
+    const point& x,
+    const tensor& R0,
+    const vector& V,
+    const vector& omega,
+    const scalar dt
+)
+{
+    const auto pose = [&](const scalar t, point& xt, tensor& Rt)
+    {
+        xt = x + t*V;
+        Rt = (mag(omega) > 0)
+            ? quaternion(omega/mag(omega), t*mag(omega)).R() & R0
+            : R0;
+    };
+    const auto solidVolumes = [&](const scalar t)
+    {
+        point xt;
+        tensor Rt;
+        pose(t, xt, Rt);
+        cutFractions cut(mesh);
+        cut.cut(shape, xt, Rt, Zero);
+        cut.finish();
+        scalarField Vs(mesh.nCells());
+        forAll(Vs, celli)
+        {
+            Vs[celli] = (1 - cut.fluidFraction()[celli])
+               *bodyCut::cellVolume(mesh, celli);
+        }
+        return Vs;
+    };
+    const scalarField before(solidVolumes(0));
+    const scalarField after(solidVolumes(dt));
+    point xm;
+    tensor Rm;
+    pose(0.5*dt, xm, Rm);
+    cutFractions mid(mesh);
+    mid.cut(shape, xm, Rm, V, omega, Zero);
+    mid.finish();
+    const surfaceScalarField& phiB = mid.solidFlux();
+    scalarField out(mesh.nCells(), 0);
+    for (label facei = 0; facei < mesh.nInternalFaces(); ++facei)
+    {
+        out[mesh.faceOwner()[facei]] += phiB[facei];
+        out[mesh.faceNeighbour()[facei]] -= phiB[facei];
+    }
+    const scalar h3 = gAverage(mesh.V());
+    return max(mag(after - before + dt*out))/h3;
+}
+
+
+TEST(cutFractions, solidFluxOutOfACellIsTheRateItsSolidVolumeShrinks)
+{
+    // A turned cube moving and spinning through a box mesh (h = 1/10):
+    // over a step the change of each cell's solid volume is minus the
+    // solid flux out of it at mid-step, cells covered and uncovered
+    // included. The midpoint rule is third order where a cell's solid
+    // volume is smooth in time, second where a body's edge or face sweeps
+    // over a cell's edge within the step (the volume's second derivative
+    // jumps there): the largest residual over the cells falls by 4.6 when
+    // dt halves (measured), more than 3.5 asked; at dt = 0.1 the body
+    // moves 0.37 h and turns 0.13 rad, and the residual is 0.043 h^3
+    test::foamTestCase tc;
+    const fvMesh& mesh = tc.makeBoxMesh(10, 10, 10, vector(1, 1, 1));
+    const particleShapes::platonicSolid cube("cube", "cube", 0.35);
+    const tensor R0 = quaternion(normalised(vector(1, 2, 3)), 0.7).R();
+    const vector V(0.3, -0.2, 0.1), omega(0.5, 1.0, -0.7);
+    const point x(0.48, 0.53, 0.51);
+    const scalar r1 = geometricLawResidual(mesh, cube, x, R0, V, omega, 0.1);
+    const scalar r2 = geometricLawResidual(mesh, cube, x, R0, V, omega, 0.05);
+    EXPECT_LT(r1, 0.05);
+    EXPECT_GT(r1/r2, 3.5) << r1 << ' ' << r2;
+    // A sphere moving (its spin carries no volume)
+    const particleShapes::sphere ball("ball", 0.5);
+    const scalar s1 = geometricLawResidual(mesh, ball, x, R0, V, omega, 0.1);
+    const scalar s2 = geometricLawResidual(mesh, ball, x, R0, V, omega, 0.05);
+    EXPECT_LT(s1, 0.05);
+    EXPECT_GT(s1/s2, 3.5) << s1 << ' ' << s2;
 }
 
 

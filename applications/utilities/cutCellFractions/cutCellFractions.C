@@ -14,7 +14,9 @@ Application
 
 Description
     Write the fluid fractions the particles leave open in the cells
-    (fluidFraction) and on the faces (faceAperture) at the start time, from
+    (fluidFraction) and on the faces (faceAperture), and the flux of their
+    velocities through the faces' solid parts (solidFlux), at the start
+    time, from
     each particle's exact shape and its periodic images (Foam::cutFractions),
     to look at in ParaView; and check the geometry: the solid volume over
     all cells against the particles' volumes, and the two sides of every
@@ -26,7 +28,8 @@ Description
 Usage
     \b cutCellFractions [-parallel] [-time T]
 
-    Writes \<time\>/fluidFraction, \<time\>/faceAperture and
+    Writes \<time\>/fluidFraction, \<time\>/faceAperture,
+    \<time\>/solidFlux and
     postProcessing/cutCellFractions/\<time\>/cutCellFractions.dat:
 
     \verbatim
@@ -143,7 +146,10 @@ int main(int argc, char *argv[])
         images +=
             periodicImages::shifts(mesh.bounds(), period, p.position(), reach)
            .size();
-        cut.cut(p.shape(), p.position(), p.R(), period);
+        cut.cut
+        (
+            p.shape(), p.position(), p.R(), p.velocity(), p.omega(), period
+        );
         // A planar shape is as deep as the mesh (the solver checks it)
         volume += p.shape().volume();
     }
@@ -168,6 +174,7 @@ int main(int argc, char *argv[])
 
     cut.fluidFraction().write();
     cut.faceAperture().write();
+    cut.solidFlux().write();
 
     if (Pstream::master())
     {

@@ -37,11 +37,37 @@ namespace
     }
 
     //- a before b in the order of their coordinates, x first
-    bool before(const point& a, const point& b)
+    //- a before b in the order of their coordinates, x first; coordinates
+    //  within tol count as equal, so that the translated copy of a face
+    //  (the other side of a cyclic, its points made apart and equal only
+    //  to round-off) has its points in the same order
+    bool before(const point& a, const point& b, const scalar tol)
     {
-        return a.x() < b.x()
-            || (a.x() == b.x() && (a.y() < b.y()
-            || (a.y() == b.y() && a.z() < b.z())));
+        for (direction i = 0; i < 3; ++i)
+        {
+            if (a[i] < b[i] - tol)
+            {
+                return true;
+            }
+            if (a[i] > b[i] + tol)
+            {
+                return false;
+            }
+        }
+        return false;
+    }
+
+    //- 1e-9 of the span of a face's points: far above round-off, far below
+    //  the distance between two of its points
+    scalar orderTolerance(const pointField& pts, const face& f)
+    {
+        point lo(pts[f[0]]), hi(pts[f[0]]);
+        for (const label pointi : f)
+        {
+            lo = min(lo, pts[pointi]);
+            hi = max(hi, pts[pointi]);
+        }
+        return 1e-9*mag(hi - lo);
     }
 
     //- The part of a planar polygon (normal n) inside the disk of radius r
@@ -96,16 +122,17 @@ Foam::List<Foam::point> Foam::bodyCut::facePolygon
     const face& f = mesh.faces()[facei];
     const pointField& pts = mesh.points();
     const label n = f.size();
+    const scalar tol = orderTolerance(pts, f);
     label first = 0;
     for (label i = 1; i < n; ++i)
     {
-        if (before(pts[f[i]], pts[f[first]]))
+        if (before(pts[f[i]], pts[f[first]], tol))
         {
             first = i;
         }
     }
     const label step =
-        before(pts[f[(first + 1) % n]], pts[f[(first + n - 1) % n]])
+        before(pts[f[(first + 1) % n]], pts[f[(first + n - 1) % n]], tol)
       ? 1 : n - 1;
     List<point> poly(n);
     forAll(poly, i)
@@ -128,22 +155,23 @@ Foam::labelList Foam::bodyCut::cellFacesInOrder
     {
         polys[i] = facePolygon(mesh, c[i]);
     }
+    const scalar tol = orderTolerance(mesh.points(), mesh.faces()[c[0]]);
     labelList order(identity(c.size()));
     std::sort
     (
         order.begin(),
         order.end(),
-        [&polys](const label a, const label b)
+        [&polys, tol](const label a, const label b)
         {
             const List<point>& pa = polys[a];
             const List<point>& pb = polys[b];
             for (label k = 0; k < min(pa.size(), pb.size()); ++k)
             {
-                if (before(pa[k], pb[k]))
+                if (before(pa[k], pb[k], tol))
                 {
                     return true;
                 }
-                if (before(pb[k], pa[k]))
+                if (before(pb[k], pa[k], tol))
                 {
                     return false;
                 }

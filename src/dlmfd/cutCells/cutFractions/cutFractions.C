@@ -40,14 +40,15 @@ namespace
         return returnReduce(reach, maxOp<scalar>());
     }
 
-    //- A face's area, from its points as bodyCut measures its parts
-    scalar faceArea(const polyMesh& mesh, const label facei)
+    //- A face's area vector, from its points in the order bodyCut
+    //- measures its parts by
+    vector pointOrderedArea(const polyMesh& mesh, const label facei)
     {
         const List<point> poly = bodyCut::facePolygon(mesh, facei);
         vector S;
         point c;
         cutPolygon::areaAndCentroid(poly, S, c);
-        return mag(S);
+        return S;
     }
 }
 
@@ -61,6 +62,7 @@ Foam::cutFractions::cutFractions(const fvMesh& mesh)
     cellReach_(largestCellReach(mesh)),
     solidVolume_(mesh.nCells(), 0),
     solidFaceFraction_(mesh.nFaces(), 0),
+    pointOrderedSolidFlux_(mesh.nFaces(), 0),
     faceVisit_(mesh.nFaces(), -1),
     nCut_(0),
     couplingMismatch_(0),
@@ -91,6 +93,19 @@ Foam::cutFractions::cutFractions(const fvMesh& mesh)
         ),
         mesh,
         dimensionedScalar("one", dimless, 1.0)
+    ),
+    solidFlux_
+    (
+        IOobject
+        (
+            "solidFlux",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE
+        ),
+        mesh,
+        dimensionedScalar("zero", dimVolume/dimTime, 0.0)
     )
 {}
 
@@ -101,6 +116,7 @@ void Foam::cutFractions::clear()
 {
     solidVolume_ = 0;
     solidFaceFraction_ = 0;
+    pointOrderedSolidFlux_ = 0;
     faceVisit_ = -1;
     nCut_ = 0;
 }
@@ -111,6 +127,8 @@ void Foam::cutFractions::cut
     const particleShape& shape,
     const point& x,
     const tensor& R,
+    const vector& V,
+    const vector& omega,
     const vector& period
 )
 {
@@ -121,13 +139,19 @@ void Foam::cutFractions::cut
       : periodicImages::shifts(mesh_.bounds(), period, x, reach)
     )
     {
-        cut(bodyCut(shape, x - s, R));
+        cut(bodyCut(shape, x - s, R), V, omega);
     }
 }
 
 
-void Foam::cutFractions::cut(const bodyCut& body)
+void Foam::cutFractions::cut
+(
+    const bodyCut& body,
+    const vector& V,
+    const vector& omega
+)
 {
+    const bool moves = (magSqr(V) + magSqr(omega) > 0);
     const label visit = nCut_++;
     cells_.clear();
     search_.cellsInBall
@@ -142,10 +166,19 @@ void Foam::cutFractions::cut(const bodyCut& body)
             if (faceVisit_[facei] != visit)
             {
                 faceVisit_[facei] = visit;
-                const scalar A = body.solidPartOfFace(mesh_, facei).area;
-                if (A > 0)
+                const bodyCut::facePart part =
+                    body.solidPartOfFace(mesh_, facei);
+                if (part.area > 0)
                 {
-                    solidFaceFraction_[facei] += A/faceArea(mesh_, facei);
+                    const vector S = pointOrderedArea(mesh_, facei);
+                    solidFaceFraction_[facei] += part.area/mag(S);
+                    if (moves)
+                    {
+                        const vector u =
+                            V + (omega ^ (part.centroid - body.centre()));
+                        pointOrderedSolidFlux_[facei] +=
+                            (u & S)*part.area/mag(S);
+                    }
                 }
             }
         }
@@ -161,6 +194,46 @@ void Foam::cutFractions::finish()
     syncTools::syncFaceList(mesh_, solidFaceFraction_, maxEqOp<scalar>());
     couplingMismatch_ =
         returnReduce(gMax(solidFaceFraction_ - lower), maxOp<scalar>());
+    // The flux along the point-ordered normal: the same direction on both
+    // sides of a processor or cyclic face (a cyclic's sides are translated
+    // copies, whose point order is the same)
+    scalarField fluxLower(pointOrderedSolidFlux_);
+    syncTools::syncFaceList(mesh_, fluxLower, minEqOp<scalar>());
+    syncTools::syncFaceList(mesh_, pointOrderedSolidFlux_, maxEqOp<scalar>());
+    couplingMismatch_ = max
+    (
+        couplingMismatch_,
+        returnReduce
+        (
+            gMax(pointOrderedSolidFlux_ - fluxLower)
+           /max(gMax(mag(pointOrderedSolidFlux_)), VSMALL),
+            maxOp<scalar>()
+        )
+    );
+    // Along each face's own normal
+    auto flux = [this](const label facei)
+    {
+        const scalar f = pointOrderedSolidFlux_[facei];
+        if (f == 0)
+        {
+            return f;
+        }
+        return (pointOrderedArea(mesh_, facei) & mesh_.faceAreas()[facei]) > 0
+            ? f : -f;
+    };
+    scalarField& phiB = solidFlux_.primitiveFieldRef();
+    forAll(phiB, facei)
+    {
+        phiB[facei] = flux(facei);
+    }
+    for (fvsPatchScalarField& pf : solidFlux_.boundaryFieldRef())
+    {
+        const label start = pf.patch().start();
+        forAll(pf, i)
+        {
+            pf[i] = flux(start + i);
+        }
+    }
 
     scalar overlap = 0;
     scalarField& alpha = fluidFraction_.primitiveFieldRef();
