@@ -16,11 +16,10 @@ Description
     Write the fluid fractions the particles leave open in the cells
     (fluidFraction) and on the faces (faceAperture), and the flux of their
     velocities through the faces' solid parts (solidFlux), at the start
-    time, from
-    each particle's exact shape and its periodic images (Foam::cutFractions),
-    to look at in ParaView; and check the geometry: the solid volume over
-    all cells against the particles' volumes, and the two sides of every
-    processor and cyclic face against each other.
+    time, from each particle's exact shape and its periodic images
+    (Foam::cutFractions), to look at in ParaView; and check the geometry:
+    the solid volume over all cells against the particles' volumes, and
+    the two sides of every processor and cyclic face against each other.
 
     The particles are those the solver would start from: the time's
     uniform/particles (written by the solver) or its particles file.
@@ -128,12 +127,24 @@ int main(int argc, char *argv[])
     const fileName file = readScene(runTime, scene);
     Info<< "Particles from " << file << ": " << scene.size() << nl;
 
+    // The period from collisionProperties' domain, which must be the
+    // mesh's box along its periodic directions
     vector period(Zero);
     for (direction d = 0; d < vector::nComponents; ++d)
     {
         if (scene.periodic()[d])
         {
             period[d] = scene.domain().span()[d];
+            const scalar meshSpan = mesh.bounds().span()[d];
+            if (mag(meshSpan - period[d]) > 1e-9*mag(mesh.bounds().span()))
+            {
+                FatalErrorInFunction
+                    << "direction " << d << " is periodic in"
+                    << " constant/collisionProperties with the domain's"
+                    << " span " << period[d] << " m, but the mesh spans "
+                    << meshSpan << " m; they must be the same"
+                    << exit(FatalError);
+            }
         }
     }
 
@@ -142,11 +153,7 @@ int main(int argc, char *argv[])
     scalar volume = 0;
     for (const rigidParticle& p : scene.particles())
     {
-        const scalar reach = p.shape().boundingRadius();
-        images +=
-            periodicImages::shifts(mesh.bounds(), period, p.position(), reach)
-           .size();
-        cut.cut
+        images += cut.cut
         (
             p.shape(), p.position(), p.R(), p.velocity(), p.omega(), period
         );

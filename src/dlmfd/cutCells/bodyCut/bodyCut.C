@@ -13,12 +13,14 @@ License
 
 #include "bodyCut.H"
 #include "cutPolygon.H"
+#include "pointOrder.H"
 #include "sphere.H"
 #include "circle.H"
 #include "convexPolyhedron.H"
 #include "mathematicalConstants.H"
 
-#include <algorithm>
+#include <vector>
+
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -34,40 +36,6 @@ namespace
             (a.x() <= a.y() && a.x() <= a.z()) ? vector(1, 0, 0)
           : (a.y() <= a.z()) ? vector(0, 1, 0) : vector(0, 0, 1);
         return normalised(n ^ axis);
-    }
-
-    //- a before b in the order of their coordinates, x first
-    //- a before b in the order of their coordinates, x first; coordinates
-    //  within tol count as equal, so that the translated copy of a face
-    //  (the other side of a cyclic, its points made apart and equal only
-    //  to round-off) has its points in the same order
-    bool before(const point& a, const point& b, const scalar tol)
-    {
-        for (direction i = 0; i < 3; ++i)
-        {
-            if (a[i] < b[i] - tol)
-            {
-                return true;
-            }
-            if (a[i] > b[i] + tol)
-            {
-                return false;
-            }
-        }
-        return false;
-    }
-
-    //- 1e-9 of the span of a face's points: far above round-off, far below
-    //  the distance between two of its points
-    scalar orderTolerance(const pointField& pts, const face& f)
-    {
-        point lo(pts[f[0]]), hi(pts[f[0]]);
-        for (const label pointi : f)
-        {
-            lo = min(lo, pts[pointi]);
-            hi = max(hi, pts[pointi]);
-        }
-        return 1e-9*mag(hi - lo);
     }
 
     //- The part of a planar polygon (normal n) inside the disk of radius r
@@ -108,120 +76,6 @@ namespace
             hi = max(hi, p);
         }
     }
-}
-
-
-// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
-
-Foam::List<Foam::point> Foam::bodyCut::facePolygon
-(
-    const polyMesh& mesh,
-    const label facei
-)
-{
-    const face& f = mesh.faces()[facei];
-    const pointField& pts = mesh.points();
-    const label n = f.size();
-    const scalar tol = orderTolerance(pts, f);
-    label first = 0;
-    for (label i = 1; i < n; ++i)
-    {
-        if (before(pts[f[i]], pts[f[first]], tol))
-        {
-            first = i;
-        }
-    }
-    const label step =
-        before(pts[f[(first + 1) % n]], pts[f[(first + n - 1) % n]], tol)
-      ? 1 : n - 1;
-    List<point> poly(n);
-    forAll(poly, i)
-    {
-        poly[i] = pts[f[(first + i*step) % n]];
-    }
-    return poly;
-}
-
-
-Foam::labelList Foam::bodyCut::cellFacesInOrder
-(
-    const polyMesh& mesh,
-    const label celli
-)
-{
-    const cell& c = mesh.cells()[celli];
-    List<List<point>> polys(c.size());
-    forAll(c, i)
-    {
-        polys[i] = facePolygon(mesh, c[i]);
-    }
-    const scalar tol = orderTolerance(mesh.points(), mesh.faces()[c[0]]);
-    labelList order(identity(c.size()));
-    std::sort
-    (
-        order.begin(),
-        order.end(),
-        [&polys, tol](const label a, const label b)
-        {
-            const List<point>& pa = polys[a];
-            const List<point>& pb = polys[b];
-            for (label k = 0; k < min(pa.size(), pb.size()); ++k)
-            {
-                if (before(pa[k], pb[k], tol))
-                {
-                    return true;
-                }
-                if (before(pb[k], pa[k], tol))
-                {
-                    return false;
-                }
-            }
-            return pa.size() < pb.size();
-        }
-    );
-    labelList faces(c.size());
-    forAll(order, i)
-    {
-        faces[i] = c[order[i]];
-    }
-    return faces;
-}
-
-
-Foam::point Foam::bodyCut::lowerCorner
-(
-    const polyMesh& mesh,
-    const label celli
-)
-{
-    point lo(point::max);
-    for (const label facei : mesh.cells()[celli])
-    {
-        for (const label pointi : mesh.faces()[facei])
-        {
-            lo = min(lo, mesh.points()[pointi]);
-        }
-    }
-    return lo;
-}
-
-
-Foam::scalar Foam::bodyCut::cellVolume(const polyMesh& mesh, const label celli)
-{
-    const point x0 = lowerCorner(mesh, celli);
-    scalar sum = 0;
-    for (const label facei : cellFacesInOrder(mesh, celli))
-    {
-        vector S;
-        point cf;
-        cutPolygon::areaAndCentroid(facePolygon(mesh, facei), S, cf);
-        const scalar sgn =
-            ((S & mesh.faceAreas()[facei]) > 0)
-         == (mesh.faceOwner()[facei] == celli)
-          ? 1 : -1;
-        sum += sgn*((cf - x0) & S);
-    }
-    return sum/3;
 }
 
 
@@ -311,7 +165,7 @@ bool Foam::bodyCut::mayMeet(const point& lo, const point& hi) const
 }
 
 
-Foam::bodyCut::facePart Foam::bodyCut::polyhedronPart
+const Foam::DynamicList<Foam::point>& Foam::bodyCut::clipByBody
 (
     const UList<point>& poly
 ) const
@@ -326,10 +180,7 @@ Foam::bodyCut::facePart Foam::bodyCut::polyhedronPart
             break;
         }
     }
-    vector S;
-    point c;
-    cutPolygon::areaAndCentroid(work0_, S, c);
-    return {mag(S), c};
+    return work0_;
 }
 
 
@@ -406,87 +257,67 @@ Foam::bodyCut::cellPart Foam::bodyCut::polyhedronCell
     const label celli
 ) const
 {
-    const point x0 = lowerCorner(mesh, celli);
-    const labelList c = cellFacesInOrder(mesh, celli);
+    point x0, hi;
+    pointOrder::cellBounds(mesh, celli, x0, hi);
+    const labelList c = pointOrder::cellFaces(mesh, celli);
     List<vector> planeNormals(c.size());
     List<scalar> planeOffsets(c.size());
+    // The body's faces that lie in a cell face's plane with the same
+    // outward normal: that cell face's solid part is their part, counted
+    // once, with the cell face. Decided from the cell face's points, as its
+    // clipping by the body plane was (within tol_: kept whole), so that
+    // both agree
+    std::vector<bool> onCellFace(faces_.size(), false);
     scalar sum = 0;
-    vector wallArea(Zero);
-    vector wallMoment(Zero);
-    scalar wallWeight = 0;
-    // A planar prism's side faces span the cell along z
-    scalar zLo = GREAT, zHi = -GREAT;
-    if (planar_)
-    {
-        const point lo = lowerCorner(mesh, celli);
-        zLo = lo.z();
-        for (const label facei : c)
-        {
-            for (const label pointi : mesh.faces()[facei])
-            {
-                zHi = max(zHi, mesh.points()[pointi].z());
-            }
-        }
-    }
     forAll(c, i)
     {
         const label facei = c[i];
-        const List<point> poly = facePolygon(mesh, facei);
+        const List<point> poly = pointOrder::facePolygon(mesh, facei);
         vector S;
         point cf;
         cutPolygon::areaAndCentroid(poly, S, cf);
-        // Out of the cell: the polygon's own normal, turned where it points
-        // in (the face's neighbour, or the polygon's order reversed)
-        const scalar sgn =
-            ((S & mesh.faceAreas()[facei]) > 0)
-         == (mesh.faceOwner()[facei] == celli)
-          ? 1 : -1;
+        const scalar sgn = pointOrder::outwardSign(mesh, facei, celli, S);
         planeNormals[i] = sgn*S/mag(S);
         planeOffsets[i] = (planeNormals[i] & cf);
 
-        polyhedronPart(poly);
-        // polyhedronPart left the clipped polygon in work0_
-        vector Ss;
-        point cs;
-        cutPolygon::areaAndCentroid(work0_, Ss, cs);
-        sum += sgn*((cs - x0) & Ss);
-    }
-    forAll(faces_, k)
-    {
-        const vector& nk = normals_[k];
-        // A body face in the plane of a cell face with the same outward
-        // normal is that cell face's solid part, counted above
-        bool onCellFace = false;
-        forAll(planeNormals, i)
+        forAll(faces_, k)
         {
-            if ((nk & planeNormals[i]) > 1 - 1e-9)
+            if ((normals_[k] & planeNormals[i]) > 1 - 1e-9)
             {
                 bool inPlane = true;
-                for (const point& p : faces_[k])
+                for (const point& p : poly)
                 {
-                    if (mag((planeNormals[i] & p) - planeOffsets[i]) > tol_)
-                    {
-                        inPlane = false;
-                        break;
-                    }
+                    inPlane =
+                        inPlane && mag((normals_[k] & p) - offsets_[k]) <= tol_;
                 }
                 if (inPlane)
                 {
-                    onCellFace = true;
-                    break;
+                    onCellFace[k] = true;
                 }
             }
         }
-        if (onCellFace)
+
+        vector Ss;
+        point cs;
+        cutPolygon::areaAndCentroid(clipByBody(poly), Ss, cs);
+        sum += sgn*((cs - x0) & Ss);
+    }
+    vector wallArea(Zero);
+    vector wallMoment(Zero);
+    scalar wallWeight = 0;
+    forAll(faces_, k)
+    {
+        if (onCellFace[k])
         {
             continue;
         }
         work0_ = faces_[k];
         if (planar_)
         {
+            // A planar prism's side faces span the cell along z
             for (point& p : work0_)
             {
-                p.z() = (p.z() > x_.z() ? zHi : zLo);
+                p.z() = (p.z() > x_.z() ? hi.z() : x0.z());
             }
         }
         forAll(planeNormals, i)
@@ -521,18 +352,17 @@ Foam::bodyCut::cellPart Foam::bodyCut::polyhedronCell
 Foam::scalar Foam::bodyCut::centreShare
 (
     const UList<vector>& normals,
-    const UList<scalar>& heights,
-    const scalar tol
+    const UList<scalar>& heights
 ) const
 {
     DynamicList<vector> through;
     forAll(heights, i)
     {
-        if (heights[i] < -tol)
+        if (heights[i] < 0)
         {
             return 0;
         }
-        if (heights[i] <= tol)
+        if (heights[i] == 0)
         {
             bool seen = false;
             for (const vector& n : through)
@@ -583,8 +413,9 @@ Foam::bodyCut::cellPart Foam::bodyCut::roundCell
     const label celli
 ) const
 {
-    const labelList c = cellFacesInOrder(mesh, celli);
-    const point x0 = lowerCorner(mesh, celli);
+    const labelList c = pointOrder::cellFaces(mesh, celli);
+    point x0, hi;
+    pointOrder::cellBounds(mesh, celli, x0, hi);
     List<vector> outward(c.size());
     List<scalar> heights(c.size());
     const scalar R3 = pow3(radius_);
@@ -595,17 +426,12 @@ Foam::bodyCut::cellPart Foam::bodyCut::roundCell
     forAll(c, i)
     {
         const label facei = c[i];
-        const List<point> poly = facePolygon(mesh, facei);
+        const List<point> poly = pointOrder::facePolygon(mesh, facei);
         vector S;
         point cf;
         cutPolygon::areaAndCentroid(poly, S, cf);
         zSum += cf.z();
-        // Out of the cell: the polygon's own normal, turned where it points
-        // in (the face's neighbour, or the polygon's order reversed)
-        const scalar sgn =
-            ((S & mesh.faceAreas()[facei]) > 0)
-         == (mesh.faceOwner()[facei] == celli)
-          ? 1 : -1;
+        const scalar sgn = pointOrder::outwardSign(mesh, facei, celli, S);
         const vector n = S/mag(S);
         if (planar_)
         {
@@ -625,20 +451,17 @@ Foam::bodyCut::cellPart Foam::bodyCut::roundCell
         {
             continue;
         }
-        // The plane through the centre (within tol_): no solid angle from
-        // there, and h A = 0; centreShare carries the share
-        const bool throughCentre = mag(h) <= tol_;
+        // A plane through the centre (h exactly 0): no solid angle from
+        // there, and h A = 0; centreShare carries the share. Near it (h
+        // tiny) the solid angle tends to the same share continuously
         point unused;
         const cutPolygon::diskSection s = cutByDiskAt
         (
             poly, x_ + h*n, n, normalTo(n),
-            Foam::sqrt(sqr(radius_) - sqr(h)), throughCentre ? 0 : h, unused
+            Foam::sqrt(sqr(radius_) - sqr(h)), h, unused
         );
         solidOut += sgn*s.area*n;
-        if (!throughCentre)
-        {
-            sum += sgn*(h*s.area - R3*s.solidAngle)/3;
-        }
+        sum += sgn*(h*s.area - R3*s.solidAngle)/3;
     }
     // The wall's centroid: the surface point along its mean normal (on a
     // sphere the pressure's moment about the centre is then zero, as it is
@@ -658,7 +481,7 @@ Foam::bodyCut::cellPart Foam::bodyCut::roundCell
       ? planarVolume(mesh, celli)
       : sum
       + (2*constant::mathematical::twoPi/3)*R3
-       *centreShare(outward, heights, tol_);
+       *centreShare(outward, heights);
     return {volume, wallArea, wallCentroid};
 }
 
@@ -669,18 +492,19 @@ Foam::scalar Foam::bodyCut::planarVolume
     const label celli
 ) const
 {
-    // A prism along z one cell deep: the solid fraction of its face normal
-    // to z
-    for (const label facei : mesh.cells()[celli])
+    // A prism along z one cell deep: the solid fraction of its first face
+    // normal to z in point order (the same face on every decomposition)
+    for (const label facei : pointOrder::cellFaces(mesh, celli))
     {
         const vector& S = mesh.faceAreas()[facei];
         if (mag(S.z()) > 0.5*mag(S))
         {
-            const List<point> poly = facePolygon(mesh, facei);
+            const List<point> poly = pointOrder::facePolygon(mesh, facei);
             vector Sc;
             point cf;
             cutPolygon::areaAndCentroid(poly, Sc, cf);
-            return cellVolume(mesh, celli)*solidPart(poly).area/mag(Sc);
+            return pointOrder::cellVolume(mesh, celli)
+               *solidPart(poly).area/mag(Sc);
         }
     }
     FatalErrorInFunction
@@ -736,7 +560,10 @@ Foam::bodyCut::facePart Foam::bodyCut::solidPart
     }
     if (radius_ < 0)
     {
-        return polyhedronPart(poly);
+        vector Sp;
+        point c;
+        cutPolygon::areaAndCentroid(clipByBody(poly), Sp, c);
+        return {mag(Sp), c};
     }
     bool inside = true;
     for (const point& p : poly)
@@ -757,7 +584,7 @@ Foam::bodyCut::facePart Foam::bodyCut::solidPartOfFace
     const label facei
 ) const
 {
-    return solidPart(facePolygon(mesh, facei));
+    return solidPart(pointOrder::facePolygon(mesh, facei));
 }
 
 
@@ -786,7 +613,7 @@ Foam::bodyCut::cellPart Foam::bodyCut::solidPartOfCell
     }
     if (inside)
     {
-        return {cellVolume(mesh, celli), Zero, lo};
+        return {pointOrder::cellVolume(mesh, celli), Zero, lo};
     }
     return radius_ < 0 ? polyhedronCell(mesh, celli) : roundCell(mesh, celli);
 }

@@ -13,6 +13,7 @@ License
 
 #include "cutFractions.H"
 #include "cutPolygon.H"
+#include "pointOrder.H"
 #include "periodicImages.H"
 #include "syncTools.H"
 #include "zeroGradientFvPatchFields.H"
@@ -44,7 +45,7 @@ namespace
     //- measures its parts by
     vector pointOrderedArea(const polyMesh& mesh, const label facei)
     {
-        const List<point> poly = bodyCut::facePolygon(mesh, facei);
+        const List<point> poly = pointOrder::facePolygon(mesh, facei);
         vector S;
         point c;
         cutPolygon::areaAndCentroid(poly, S, c);
@@ -122,7 +123,7 @@ void Foam::cutFractions::clear()
 }
 
 
-void Foam::cutFractions::cut
+Foam::label Foam::cutFractions::cut
 (
     const particleShape& shape,
     const point& x,
@@ -132,15 +133,30 @@ void Foam::cutFractions::cut
     const vector& period
 )
 {
+    // A body as wide as a period would meet its own image: the fractions
+    // would count the overlap twice
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        if (period[d] > 0 && 2*shape.boundingRadius() >= period[d])
+        {
+            FatalErrorInFunction
+                << "shape " << shape.name() << " (bounding diameter "
+                << 2*shape.boundingRadius() << " m) is not shorter than the"
+                << " period " << period[d] << " m along direction " << d
+                << "; it would meet its own periodic image"
+                << exit(FatalError);
+        }
+    }
     const scalar reach = shape.boundingRadius() + cellReach_;
-    for
+    const List<vector> shifts
     (
-        const vector& s
-      : periodicImages::shifts(mesh_.bounds(), period, x, reach)
-    )
+        periodicImages::shifts(mesh_.bounds(), period, x, reach)
+    );
+    for (const vector& s : shifts)
     {
         cut(bodyCut(shape, x - s, R), V, omega);
     }
+    return shifts.size();
 }
 
 
@@ -193,7 +209,7 @@ void Foam::cutFractions::finish()
     syncTools::syncFaceList(mesh_, lower, minEqOp<scalar>());
     syncTools::syncFaceList(mesh_, solidFaceFraction_, maxEqOp<scalar>());
     couplingMismatch_ =
-        returnReduce(gMax(solidFaceFraction_ - lower), maxOp<scalar>());
+        returnReduce(max(solidFaceFraction_ - lower), maxOp<scalar>());
     // The flux along the point-ordered normal: the same direction on both
     // sides of a processor or cyclic face (a cyclic's sides are translated
     // copies, whose point order is the same)
@@ -203,12 +219,8 @@ void Foam::cutFractions::finish()
     couplingMismatch_ = max
     (
         couplingMismatch_,
-        returnReduce
-        (
-            gMax(pointOrderedSolidFlux_ - fluxLower)
-           /max(gMax(mag(pointOrderedSolidFlux_)), VSMALL),
-            maxOp<scalar>()
-        )
+        returnReduce(max(pointOrderedSolidFlux_ - fluxLower), maxOp<scalar>())
+       /max(gMax(mag(pointOrderedSolidFlux_)), VSMALL)
     );
     // Along each face's own normal
     auto flux = [this](const label facei)
@@ -241,7 +253,7 @@ void Foam::cutFractions::finish()
     {
         const scalar f =
             solidVolume_[celli] > 0
-          ? solidVolume_[celli]/bodyCut::cellVolume(mesh_, celli)
+          ? solidVolume_[celli]/pointOrder::cellVolume(mesh_, celli)
           : 0;
         overlap = max(overlap, f - 1);
         alpha[celli] = 1 - min(f, scalar(1));

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "cutPolygon.H"
+#include "mathematicalConstants.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -42,9 +43,16 @@ namespace
             const scalar h2 = sqr(h);
             const scalar p = Foam::sqrt(h2 + magSqr(P));
             const scalar q = Foam::sqrt(h2 + magSqr(Q));
+            // p q + P.Q without cancellation where P.Q < 0 (an angle beyond
+            // a right angle at the centre): p^2 q^2 - (P.Q)^2 is
+            // h^2 (h^2 + |P|^2 + |Q|^2) + (P x Q)^2
+            const scalar PQ = (P & Q);
+            const scalar pqPlusPQ =
+                PQ >= 0
+              ? p*q + PQ
+              : (h2*(h2 + magSqr(P) + magSqr(Q)) + sqr(c))/(p*q - PQ);
             s.solidAngle +=
-                2*sign(h)
-               *Foam::atan2(c, p*q + mag(h)*(p + q) + h2 + (P & Q));
+                2*sign(h)*Foam::atan2(c, pqPlusPQ + mag(h)*(p + q) + h2);
         }
     }
 
@@ -170,6 +178,51 @@ Foam::cutPolygon::diskSection Foam::cutPolygon::cutByDisk
     diskSection s{0, vector2D::zero, 0};
     const label np = poly.size();
     const scalar r2 = sqr(r);
+    // Whether an edge runs inside the circle, and whether the centre lies
+    // inside the polygon (on the left of every edge, counter-clockwise)
+    bool crosses = false;
+    scalar twiceArea = 0;
+    for (label i = 0; i < np; ++i)
+    {
+        twiceArea += cross2(poly[i], poly[(i + 1) % np]);
+    }
+    const scalar orient = (twiceArea < 0 ? -1 : 1);
+    bool centreInside = np >= 3;
+    for (label i = 0; i < np; ++i)
+    {
+        const vector2D& A = poly[i];
+        const vector2D& B = poly[(i + 1) % np];
+        centreInside = centreInside && orient*cross2(A, B) >= 0;
+        const vector2D d = B - A;
+        const scalar a = magSqr(d);
+        if (a > 0)
+        {
+            const scalar b = (A & d);
+            const scalar disc = sqr(b) - a*(magSqr(A) - r2);
+            if (disc > 0)
+            {
+                const scalar root = Foam::sqrt(disc);
+                crosses =
+                    crosses || ((-b + root)/a > 0 && (-b - root)/a < 1);
+            }
+        }
+    }
+    if (!crosses)
+    {
+        // No edge inside the circle: the whole disk, or nothing (the
+        // sectors would add up to either, less round-off)
+        if (centreInside)
+        {
+            s.area = orient*constant::mathematical::pi*r2;
+            if (h != 0)
+            {
+                s.solidAngle =
+                    orient*constant::mathematical::twoPi*sign(h)
+                   *(1 - mag(h)/Foam::sqrt(sqr(h) + r2));
+            }
+        }
+        return s;
+    }
     for (label i = 0; i < np; ++i)
     {
         const vector2D& A = poly[i];
