@@ -18,6 +18,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "dlmfdCoupling.H"
+#include "OStringStream.H"
 #include "Time.H"
 #include "fvmDdt.H"
 #include "linear.H"
@@ -103,12 +104,8 @@ void Foam::dlmfdCoupling::checkPressureCorrectors
 (
     const volScalarField& nu,
     const label nCorrectors
-) const
+)
 {
-    if (nCorrectors >= 3)
-    {
-        return;
-    }
     const scalar dt = mesh_.time().deltaTValue();
     const surfaceScalarField nuf(linearInterpolate(nu));
     const scalar viscous =
@@ -117,6 +114,44 @@ void Foam::dlmfdCoupling::checkPressureCorrectors
         (
             nuf.primitiveField()*sqr(mesh_.deltaCoeffs().primitiveField())
         );
+    if
+    (
+        !output_.freeBodyRingingSaid
+     && viscous > freeBodyViscousNumberMeasured
+    )
+    {
+        // The lightest free body (the particles this rank holds)
+        scalar lightest = GREAT;
+        for (const rigidParticle& p : granular_.particles())
+        {
+            if (p.motion() == rigidParticle::motionKind::free)
+            {
+                lightest = min(lightest, densityRatio(p));
+            }
+        }
+        reduce(lightest, minOp<scalar>());
+        if (lightest < freeBodyDensityRatioMeasured)
+        {
+            // Four digits, whatever writePrecision the case sets
+            OStringStream msg;
+            msg.precision(4);
+            msg << "time " << mesh_.time().timeName() << ": the viscous"
+                << " number nu dt/h^2 of this step is " << viscous
+                << " with free particles of density ratio down to "
+                << lightest << ". Free bodies at m = 2 were measured to"
+                << " ring above " << freeBodyViscousNumberMeasured
+                << " and to diverge at 3.2 (a cube) and 6.4 (a sphere)"
+                << " (benchmarks/validation/shearRotation); a time step of"
+                << " at most " << dt*freeBodyViscousNumberMeasured/viscous
+                << " s keeps below it. Said once.";
+            WarningInFunction << msg.str().c_str() << endl;
+            output_.freeBodyRingingSaid = true;
+        }
+    }
+    if (nCorrectors >= 3)
+    {
+        return;
+    }
     if (viscous > maxTwoCorrectorViscousNumber)
     {
         FatalErrorInFunction
