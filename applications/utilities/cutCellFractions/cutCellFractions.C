@@ -42,38 +42,12 @@ Usage
 #include "fvMesh.H"
 #include "IOdictionary.H"
 #include "OFstream.H"
-#include "OSspecific.H"
 #include "granularSystem.H"
 #include "particleFileReader.H"
 #include "cutFractions.H"
-#include "periodicImages.H"
+#include "OSspecific.H"
 
 using namespace Foam;
-
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
-
-namespace
-{
-
-//- The particles the solver would start from, read on the master and
-//  handed to every rank
-fileName readScene(const Time& runTime, granularSystem& into)
-{
-    fileName file;
-    dictionary dict;
-    if (Pstream::master())
-    {
-        file = particleFileReader::startFile(runTime);
-        dict = particleFileReader::read(file);
-    }
-    Pstream::scatter(file);
-    Pstream::scatter(dict);
-    into.readParticles(dict, file);
-    return file;
-}
-
-} // End anonymous namespace
-
 
 int main(int argc, char *argv[])
 {
@@ -124,7 +98,12 @@ int main(int argc, char *argv[])
         )
     );
     granularSystem scene(particleDict, collisionDict);
-    const fileName file = readScene(runTime, scene);
+    // The particles the solver would start from, on every rank
+    fileName file;
+    scene.readParticles
+    (
+        particleFileReader::readStartOnEveryRank(runTime, file), file
+    );
     Info<< "Particles from " << file << ": " << scene.size() << nl;
 
     // The period from collisionProperties' domain, which must be the

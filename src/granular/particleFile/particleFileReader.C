@@ -17,6 +17,7 @@ License
 #include "HashTable.H"
 #include "error.H"
 #include "Time.H"
+#include "Pstream.H"
 #include "OSspecific.H"
 
 #include <cctype>
@@ -459,6 +460,24 @@ Foam::fileName Foam::particleFileReader::startFile(const Time& runTime)
             << " from 0.orig" << exit(FatalError);
     }
     return file;
+}
+
+
+Foam::dictionary Foam::particleFileReader::readStartOnEveryRank
+(
+    const Time& runTime,
+    fileName& file
+)
+{
+    dictionary dict;
+    if (Pstream::master())
+    {
+        file = startFile(runTime);
+        dict = read(file);
+    }
+    Pstream::scatter(file);
+    Pstream::scatter(dict);
+    return dict;
 }
 
 

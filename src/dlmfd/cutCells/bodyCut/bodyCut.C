@@ -67,15 +67,6 @@ namespace
         }
         return s;
     }
-
-    void extend(const UList<point>& ps, point& lo, point& hi)
-    {
-        for (const point& p : ps)
-        {
-            lo = min(lo, p);
-            hi = max(hi, p);
-        }
-    }
 }
 
 
@@ -151,14 +142,15 @@ Foam::bodyCut::bodyCut
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
-bool Foam::bodyCut::mayMeet(const point& lo, const point& hi) const
+bool Foam::bodyCut::mayMeet(const boundBox& bb) const
 {
     // The box's point nearest the centre, within the bounding radius?
     scalar d2 = 0;
     for (direction i = 0; i < (planar_ ? 2 : 3); ++i)
     {
         const scalar c = x_[i];
-        const scalar gap = max(max(lo[i] - c, c - hi[i]), scalar(0));
+        const scalar gap =
+            max(max(bb.min()[i] - c, c - bb.max()[i]), scalar(0));
         d2 += sqr(gap);
     }
     return d2 <= sqr(boundingRadius_ + tol_);
@@ -195,7 +187,7 @@ Foam::bodyCut::facePart Foam::bodyCut::spherePart
     const scalar h = ((centroid - x_) & n);
     if (mag(h) >= radius_)
     {
-        return {0, centroid};
+        return {0, centroid, S};
     }
     point c = centroid;
     const scalar area = cutByDiskAt
@@ -203,7 +195,7 @@ Foam::bodyCut::facePart Foam::bodyCut::spherePart
         poly, x_ + h*n, n, normalTo(n), Foam::sqrt(sqr(radius_) - sqr(h)),
         0, c
     ).area;
-    return {max(area, scalar(0)), c};
+    return {max(area, scalar(0)), c, S};
 }
 
 
@@ -224,7 +216,7 @@ Foam::bodyCut::facePart Foam::bodyCut::circlePart
             poly, point(x_.x(), x_.y(), centroid.z()), n, vector(1, 0, 0),
             radius_, 0, c
         ).area;
-        return {max(area, scalar(0)), c};
+        return {max(area, scalar(0)), c, S};
     }
     if (mag(n.z()) < 1e-9)
     {
@@ -232,7 +224,7 @@ Foam::bodyCut::facePart Foam::bodyCut::circlePart
         const scalar h = ((centroid - x_) & n);
         if (mag(h) >= radius_)
         {
-            return {0, centroid};
+            return {0, centroid, S};
         }
         const vector t = normalised(vector(0, 0, 1) ^ n);
         const scalar w = Foam::sqrt(sqr(radius_) - sqr(h));
@@ -241,13 +233,13 @@ Foam::bodyCut::facePart Foam::bodyCut::circlePart
         vector Sp;
         point c;
         cutPolygon::areaAndCentroid(work1_, Sp, c);
-        return {mag(Sp), c};
+        return {mag(Sp), c, S};
     }
     FatalErrorInFunction
         << "a face with normal " << n << " is neither normal nor parallel"
         << " to z; a circle's (2D) mesh has faces of those two kinds only"
         << exit(FatalError);
-    return {0, centroid};
+    return {0, centroid, S};
 }
 
 
@@ -445,9 +437,7 @@ Foam::bodyCut::cellPart Foam::bodyCut::roundCell
         {
             continue;
         }
-        point lo = poly[0], hi = poly[0];
-        extend(poly, lo, hi);
-        if (!mayMeet(lo, hi))
+        if (!mayMeet(boundBox(poly, false)))
         {
             continue;
         }
@@ -548,22 +538,16 @@ Foam::bodyCut::facePart Foam::bodyCut::solidPart
     point centroid;
     cutPolygon::areaAndCentroid(poly, S, centroid);
     const scalar A = mag(S);
-    if (A <= 0)
+    if (A <= 0 || !mayMeet(boundBox(poly, false)))
     {
-        return {0, centroid};
-    }
-    point lo = poly[0], hi = poly[0];
-    extend(poly, lo, hi);
-    if (!mayMeet(lo, hi))
-    {
-        return {0, centroid};
+        return {0, centroid, S};
     }
     if (radius_ < 0)
     {
         vector Sp;
         point c;
         cutPolygon::areaAndCentroid(clipByBody(poly), Sp, c);
-        return {mag(Sp), c};
+        return {mag(Sp), c, S};
     }
     bool inside = true;
     for (const point& p : poly)
@@ -572,9 +556,12 @@ Foam::bodyCut::facePart Foam::bodyCut::solidPart
     }
     if (inside)
     {
-        return {A, centroid};
+        return {A, centroid, S};
     }
-    return planar_ ? circlePart(poly, S, centroid) : spherePart(poly, S, centroid);
+    facePart part =
+        planar_ ? circlePart(poly, S, centroid) : spherePart(poly, S, centroid);
+    part.faceArea = S;
+    return part;
 }
 
 
@@ -594,26 +581,19 @@ Foam::bodyCut::cellPart Foam::bodyCut::solidPartOfCell
     const label celli
 ) const
 {
-    const cell& c = mesh.cells()[celli];
-    point lo(point::max), hi(point::min);
-    bool inside = true;
-    for (const label facei : c)
+    const boundBox bb(mesh.points(), mesh.cellPoints()[celli], false);
+    if (!mayMeet(bb))
     {
-        for (const label pointi : mesh.faces()[facei])
-        {
-            const point& p = mesh.points()[pointi];
-            lo = min(lo, p);
-            hi = max(hi, p);
-            inside = inside && contains(p);
-        }
+        return {0, Zero, bb.min()};
     }
-    if (!mayMeet(lo, hi))
+    bool inside = true;
+    for (const label pointi : mesh.cellPoints()[celli])
     {
-        return {0, Zero, lo};
+        inside = inside && contains(mesh.points()[pointi]);
     }
     if (inside)
     {
-        return {pointOrder::cellVolume(mesh, celli), Zero, lo};
+        return {pointOrder::cellVolume(mesh, celli), Zero, bb.min()};
     }
     return radius_ < 0 ? polyhedronCell(mesh, celli) : roundCell(mesh, celli);
 }

@@ -186,7 +186,7 @@ void Foam::cutFractions::cut
                     body.solidPartOfFace(mesh_, facei);
                 if (part.area > 0)
                 {
-                    const vector S = pointOrderedArea(mesh_, facei);
+                    const vector& S = part.faceArea;
                     solidFaceFraction_[facei] += part.area/mag(S);
                     if (moves)
                     {

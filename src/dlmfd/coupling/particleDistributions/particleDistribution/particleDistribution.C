@@ -52,23 +52,19 @@ Foam::fileName Foam::particleDistribution::readParticles
 ) const
 {
     fileName file;
-    dictionary dict;
-    if (Pstream::master())
+    if (masterOnly)
     {
-        file = particleFileReader::startFile(mesh_.time());
-        if (masterOnly)
+        if (Pstream::master())
         {
+            file = particleFileReader::startFile(mesh_.time());
             into.readParticles(file);
         }
-        else
-        {
-            dict = particleFileReader::read(file);
-        }
+        Pstream::scatter(file);
     }
-    Pstream::scatter(file);
-    if (!masterOnly)
+    else
     {
-        Pstream::scatter(dict);
+        const dictionary dict =
+            particleFileReader::readStartOnEveryRank(mesh_.time(), file);
         into.readParticles(dict, file);
     }
     return file;
